@@ -1,0 +1,51 @@
+// Execution policies: the one place where loops are handed to threads. A loop body is written
+// once as a function of the index and run by a policy; no copy of a loop per backend.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+
+namespace sluice::exec {
+
+// Runs on the calling thread; used by tests and as the reference for determinism.
+struct Serial {
+  template <class Body>
+  static void for_each(std::size_t n, Body&& body) {
+    for (std::size_t i = 0; i < n; ++i) body(i);
+  }
+  template <class Value>
+  static double max_of(std::size_t n, Value&& value) {
+    double result = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) result = std::max(result, value(i));
+    return result;
+  }
+};
+
+// OpenMP threads with a static schedule, so each thread gets a contiguous block of the
+// cell-sorted particles. Only maxima and minima are reduced here: they do not depend on the
+// order of summation, so the answer is the same on any number of threads.
+struct OpenMP {
+  template <class Body>
+  static void for_each(std::size_t n, Body&& body) {
+    const long count = static_cast<long>(n);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+  }
+  template <class Value>
+  static double max_of(std::size_t n, Value&& value) {
+    double result = -std::numeric_limits<double>::infinity();
+    const long count = static_cast<long>(n);
+#pragma omp parallel for schedule(static) reduction(max : result)
+    for (long i = 0; i < count; ++i) result = std::max(result, value(static_cast<std::size_t>(i)));
+    return result;
+  }
+};
+
+using Default = OpenMP;
+
+// Sets the number of threads the OpenMP policy uses (0 leaves the OpenMP default).
+void set_thread_count(int threads);
+int thread_count();
+
+}  // namespace sluice::exec

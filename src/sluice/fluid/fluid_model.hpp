@@ -1,0 +1,42 @@
+// The interface every fluid model implements. The engine owns the particles, the neighbour
+// search and the step loop; a model adds its fields and its stages.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sluice/io/case_config.hpp"
+#include "sluice/sim/state.hpp"
+
+namespace sluice {
+
+template <int D>
+class FluidModel {
+ public:
+  virtual ~FluidModel() = default;
+
+  // Radius within which particles interact; sets the cell size and the wall thickness.
+  virtual Real interaction_radius() const = 0;
+
+  // Called once the particles exist (with hydrostatic pressure set): adds the model's
+  // fields, sets densities, and evaluates what the first step needs. Neighbours are sorted.
+  virtual void initialize(SimulationState<D>& state) = 0;
+
+  // The model's stages, in order, around the engine's neighbour search: `before` runs ahead of
+  // it (e.g. moving the particles), `after` after it.
+  virtual void append_stages(std::vector<std::unique_ptr<Stage<D>>>& before,
+                             std::vector<std::unique_ptr<Stage<D>>>& after) = 0;
+
+  // The stable step for the next step, from the state after the last one.
+  virtual double next_time_step(const SimulationState<D>& state) const = 0;
+
+  // One line with the model's resolved parameters, for `sluice check` and the run header.
+  virtual std::string describe() const = 0;
+};
+
+// Creates the model named in the case (model.name), reading and validating its parameters.
+template <int D>
+std::unique_ptr<FluidModel<D>> make_fluid_model(const io::CaseConfig& config);
+
+}  // namespace sluice

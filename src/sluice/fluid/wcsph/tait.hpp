@@ -1,0 +1,36 @@
+// Tait equation of state, p = B ((rho/rho0)^gamma - 1) with B = c0^2 rho0 / gamma
+// (Monaghan 1994; Batchelor 1967).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "sluice/core/types.hpp"
+
+namespace sluice {
+
+struct TaitEquation {
+  TaitEquation(Real rest_density, Real sound_speed, Real gamma)
+      : rho0(rest_density),
+        c0(sound_speed),
+        gamma(gamma),
+        stiffness(sound_speed * sound_speed * rest_density / gamma) {}
+
+  Real pressure(Real rho) const {
+    const Real ratio = rho / rho0;
+    if (gamma == 7) {
+      const Real r2 = ratio * ratio;
+      return stiffness * (r2 * r2 * r2 * ratio - 1);
+    }
+    return stiffness * (std::pow(ratio, gamma) - 1);
+  }
+
+  // Inverse; pressures below -B (no density reaches them) map to a tiny positive density.
+  Real density(Real p) const {
+    return rho0 * std::pow(std::max(1 + p / stiffness, Real(1e-6)), 1 / gamma);
+  }
+
+  Real rho0, c0, gamma, stiffness;
+};
+
+}  // namespace sluice

@@ -1,0 +1,69 @@
+#include "sluice/fluid/wcsph/wcsph_parameters.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "sluice/kernels/cubic_spline.hpp"
+#include "sluice/kernels/wendland_c2.hpp"
+
+namespace sluice {
+
+WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
+  io::MapReader model(config.source, config.model, "model", config.model_line);
+  model.required<std::string>("name");
+  WcsphParameters p;
+  const std::string kernel = model.optional<std::string>("kernel", "wendland");
+  if (kernel == "wendland") {
+    p.kernel = KernelChoice::kWendlandC2;
+  } else if (kernel == "cubic_spline") {
+    p.kernel = KernelChoice::kCubicSpline;
+  } else {
+    std::string problem =
+        fmt::format("unknown kernel '{}', expected wendland or cubic_spline", kernel);
+    const std::string guess = io::closest_match(kernel, {"wendland", "cubic_spline"});
+    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+    model.fail("kernel", problem);
+  }
+  p.h_over_dx = model.optional_positive("h_over_dx", p.kernel == KernelChoice::kWendlandC2
+                                                         ? WendlandC2<3>::kDefaultHOverDx
+                                                         : CubicSpline<3>::kDefaultHOverDx);
+  if (p.h_over_dx < 0.9 || p.h_over_dx > 2.5) {
+    model.fail("h_over_dx", fmt::format("must lie in [0.9, 2.5], got {}", p.h_over_dx));
+  }
+  p.sound_speed = model.optional_positive("sound_speed", 0);
+  p.speed_factor = model.optional_positive("speed_factor", p.speed_factor);
+  p.max_speed = model.optional_positive("max_speed", 0);
+  p.gamma = model.optional_positive("gamma", p.gamma);
+  p.artificial_viscosity =
+      model.optional_non_negative("artificial_viscosity", p.artificial_viscosity);
+  p.density_diffusion = model.optional_non_negative("density_diffusion", p.density_diffusion);
+  p.cfl = model.optional_positive("cfl", p.cfl);
+  p.force_cfl = model.optional_positive("force_cfl", p.force_cfl);
+  if (p.cfl > 1) model.fail("cfl", fmt::format("must not exceed 1, got {}", p.cfl));
+  const std::string slip = model.optional<std::string>("wall_slip", "no_slip");
+  if (slip != "no_slip" && slip != "free_slip") {
+    model.fail("wall_slip", fmt::format("expected no_slip or free_slip, got '{}'", slip));
+  }
+  p.no_slip = slip == "no_slip";
+  model.finish();
+
+  if (p.sound_speed == 0) {
+    if (p.max_speed == 0) {
+      // Largest speed of a free fall from the top of the highest fluid block to the floor.
+      double top = config.domain.min[2];
+      for (const auto& block : config.fluid.blocks) top = std::max(top, block.box.max[2]);
+      const double height = top - config.domain.min[2];
+      p.max_speed = std::sqrt(2 * config.gravity.norm() * height);
+      if (!(p.max_speed > 0)) {
+        model.fail_here(
+            "cannot derive the speed of sound without gravity: set model.max_speed or "
+            "model.sound_speed");
+      }
+    }
+    p.sound_speed = p.speed_factor * p.max_speed;
+  }
+  return p;
+}
+
+}  // namespace sluice

@@ -1,0 +1,188 @@
+// Case file reading: YAML text -> validated CaseConfig. The key layout is documented in
+// docs/case-format.md; keep the two in step.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sluice/io/case_config.hpp"
+
+namespace sluice::io {
+
+namespace {
+
+const std::vector<std::string> kTankSides = {"x-", "x+", "y-", "y+", "z-", "z+"};
+
+AxisBox read_box(MapReader& map, int dimension) {
+  AxisBox box{map.required<Vec3>("min"), map.required<Vec3>("max")};
+  for (int a = 0; a < 3; ++a) {
+    if (dimension == 2 && a == 1) continue;
+    if (!(box.max[a] > box.min[a])) {
+      map.fail("max",
+               fmt::format("must be greater than 'min' in every component (axis {})", "xyz"[a]));
+    }
+  }
+  return box;
+}
+
+bool inside(const AxisBox& inner, const AxisBox& outer, int dimension) {
+  return outer.contains(inner.min, dimension) && outer.contains(inner.max, dimension);
+}
+
+FluidConfig read_fluid(MapReader fluid, const CaseConfig& c) {
+  FluidConfig out;
+  out.density = fluid.optional_positive("density", out.density);
+  out.kinematic_viscosity = fluid.optional_non_negative("viscosity", out.kinematic_viscosity);
+  if (!fluid.has("blocks")) fluid.fail("blocks", "missing required key");
+  for (auto& block : fluid.list_of_maps("blocks")) {
+    FluidBlockConfig b;
+    b.line = block.line();
+    b.name = block.optional<std::string>("name", fmt::format("block{}", out.blocks.size()));
+    b.box = read_box(block, c.dimension);
+    b.velocity = block.optional<Vec3>("velocity", Vec3::Zero());
+    if (!inside(b.box, c.domain, c.dimension)) {
+      block.fail("min", fmt::format("fluid block '{}' is not inside the domain", b.name));
+    }
+    block.finish();
+    out.blocks.push_back(b);
+  }
+  if (out.blocks.empty()) fluid.fail("blocks", "needs at least one fluid block");
+  fluid.finish();
+  return out;
+}
+
+WallConfig read_wall(MapReader& wall, const CaseConfig& c, size_t index) {
+  WallConfig w;
+  w.line = wall.line();
+  const std::string type = wall.required<std::string>("type");
+  w.name = wall.optional<std::string>("name", fmt::format("{}{}", type, index));
+  if (type == "tank" || type == "box") {
+    w.shape = type == "tank" ? WallShape::kTank : WallShape::kBox;
+    w.box = read_box(wall, c.dimension);
+    if (w.shape == WallShape::kTank) {
+      w.open_sides = wall.optional<std::vector<std::string>>("open", {});
+      for (const auto& side : w.open_sides) {
+        if (std::find(kTankSides.begin(), kTankSides.end(), side) == kTankSides.end()) {
+          std::string problem =
+              fmt::format("unknown side '{}', expected one of x-, x+, y-, y+, z-, z+", side);
+          const std::string guess = closest_match(side, kTankSides);
+          if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+          wall.fail("open", problem);
+        }
+      }
+    }
+  } else if (type == "plane") {
+    w.shape = WallShape::kPlane;
+    w.point = wall.required<Vec3>("point");
+    w.normal = wall.required<Vec3>("normal");
+    if (c.dimension == 2) w.normal[1] = 0;
+    if (!(w.normal.norm() > 0)) wall.fail("normal", "must not be the zero vector");
+    w.normal.normalize();
+  } else {
+    std::string problem = fmt::format("unknown wall type '{}', expected tank, box or plane", type);
+    const std::string guess = closest_match(type, {"tank", "box", "plane"});
+    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+    wall.fail("type", problem);
+  }
+  wall.finish();
+  return w;
+}
+
+ProbeConfig read_probe(MapReader& probe, size_t index) {
+  ProbeConfig p;
+  p.line = probe.line();
+  const std::string type = probe.required<std::string>("type");
+  p.name = probe.optional<std::string>("name", fmt::format("{}{}", type, index));
+  if (type == "pressure") {
+    p.kind = ProbeKind::kPressure;
+    p.point = probe.required<Vec3>("point");
+  } else if (type == "water_height") {
+    p.kind = ProbeKind::kWaterHeight;
+    p.point = probe.required<Vec3>("point");
+  } else if (type == "surge_front") {
+    p.kind = ProbeKind::kSurgeFront;
+    const std::string axis = probe.optional<std::string>("axis", "x");
+    if (axis != "x" && axis != "y") probe.fail("axis", "expected x or y");
+    p.axis = axis == "x" ? 0 : 1;
+  } else {
+    std::string problem = fmt::format(
+        "unknown probe type '{}', expected pressure, water_height or surge_front", type);
+    const std::string guess = closest_match(type, {"pressure", "water_height", "surge_front"});
+    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+    probe.fail("type", problem);
+  }
+  probe.finish();
+  return p;
+}
+
+}  // namespace
+
+CaseConfig parse_case(const std::string& text, const std::string& file_name,
+                      const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull())
+    throw InputError(file_name, 1, "", "the case file is empty");
+
+  auto source = std::make_shared<YamlSource>();
+  source->file = file_name;
+  if (root.IsMap()) {
+    for (const auto& assignment : overrides) {
+      source->overridden_paths.insert(apply_override(root, assignment));
+    }
+  }
+
+  CaseConfig c;
+  c.source = source;
+  // The dimension decides how vectors are read, so it is read first.
+  {
+    MapReader probe_dim(source, root, "", 1);
+    const int dimension = probe_dim.required<int>("dimension");
+    if (dimension != 2 && dimension != 3) probe_dim.fail("dimension", "must be 2 or 3");
+    source->dimension = dimension;
+    c.dimension = dimension;
+  }
+  MapReader top(source, root, "", 1);
+  top.required<int>("dimension");
+  c.name = top.optional<std::string>("name", std::filesystem::path(file_name).stem().string());
+  c.spacing = top.required_positive("spacing");
+
+  MapReader domain = top.map("domain");
+  c.domain = read_box(domain, c.dimension);
+  domain.finish();
+
+  c.gravity = top.optional<Vec3>("gravity", c.dimension == 2 ? Vec3(0, 0, -9.81) : c.gravity);
+  c.end_time = top.required_positive("end_time");
+  c.output_interval = top.required_positive("output_interval");
+  c.probe_interval = top.optional_positive("probe_interval", c.output_interval / 10);
+
+  c.fluid = read_fluid(top.map("fluid"), c);
+
+  size_t index = 0;
+  for (auto& wall : top.list_of_maps("walls")) c.walls.push_back(read_wall(wall, c, index++));
+  index = 0;
+  for (auto& probe : top.list_of_maps("probes")) c.probes.push_back(read_probe(probe, index++));
+
+  MapReader model = top.map("model");
+  c.model_name = model.required<std::string>("name");
+  c.model = top.node("model");
+  c.model_line = model.line();
+  top.finish();
+  return c;
+}
+
+CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "", "cannot open the case file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_case(text.str(), path, overrides);
+}
+
+}  // namespace sluice::io

@@ -1,0 +1,239 @@
+#include "sluice/io/vtk_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+namespace sluice::io {
+
+namespace {
+
+// The raw appended data is the in-memory representation, declared LittleEndian in the header.
+static_assert(std::endian::native == std::endian::little,
+              "vtk_writer assumes a little-endian host");
+
+std::string xml_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// Writes PATH.tmp; commit() closes it and renames it over PATH. If commit() is not reached
+// (an exception), the temporary is removed and PATH is left as it was.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path) : path_(std::move(path)), tmp_(path_ + ".tmp") {
+    file_ = std::fopen(tmp_.c_str(), "wb");
+    if (file_ == nullptr) fail("open " + tmp_, errno);
+  }
+  ~AtomicFile() {
+    if (file_ != nullptr) std::fclose(file_);
+    if (!committed_) std::remove(tmp_.c_str());
+  }
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  void write(const void* data, size_t bytes) {
+    if (bytes > 0 && std::fwrite(data, 1, bytes, file_) != bytes) fail("write " + tmp_, errno);
+  }
+  void write(std::string_view text) { write(text.data(), text.size()); }
+
+  void commit() {
+    // fclose flushes the buffer, so a full disk shows up here.
+    if (std::fclose(std::exchange(file_, nullptr)) != 0) fail("close " + tmp_, errno);
+    std::error_code error;
+    std::filesystem::rename(tmp_, path_, error);
+    if (error) {
+      throw std::runtime_error(
+          fmt::format("cannot write '{}': rename {}: {}", path_, tmp_, error.message()));
+    }
+    committed_ = true;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& step, int error) const {
+    throw std::runtime_error(
+        fmt::format("cannot write '{}': {}: {}", path_, step, std::strerror(error)));
+  }
+
+  std::string path_;
+  std::string tmp_;
+  std::FILE* file_ = nullptr;
+  bool committed_ = false;
+};
+
+// One appended block: its UInt64 byte count, then the bytes.
+void write_block(AtomicFile& out, const void* data, uint64_t bytes) {
+  out.write(&bytes, sizeof bytes);
+  out.write(data, bytes);
+}
+
+// Block of the Int64 values first, first+1, ..., first+count-1, generated in chunks so a large
+// frame needs no second full-size buffer.
+void write_iota_block(AtomicFile& out, int64_t first, int64_t count) {
+  const uint64_t bytes = static_cast<uint64_t>(count) * sizeof(int64_t);
+  out.write(&bytes, sizeof bytes);
+  std::array<int64_t, 4096> chunk;
+  for (int64_t begin = 0; begin < count; begin += static_cast<int64_t>(chunk.size())) {
+    const int64_t size = std::min<int64_t>(static_cast<int64_t>(chunk.size()), count - begin);
+    for (int64_t i = 0; i < size; ++i) chunk[i] = first + begin + i;
+    out.write(chunk.data(), static_cast<size_t>(size) * sizeof(int64_t));
+  }
+}
+
+void check_sizes(const std::string& path, const PolyFrame& frame) {
+  auto fail = [&](const std::string& problem) {
+    throw std::invalid_argument(fmt::format("write_vtp '{}': {}", path, problem));
+  };
+  if (frame.points.size() % 3 != 0) {
+    fail(fmt::format("points has {} values, not a multiple of 3", frame.points.size()));
+  }
+  const size_t n = frame.points.size() / 3;
+  for (const PointArrayF32& array : frame.float_arrays) {
+    if (array.components < 1) {
+      fail(fmt::format("array '{}' has {} components", array.name, array.components));
+    }
+    if (array.values.size() != n * static_cast<size_t>(array.components)) {
+      fail(fmt::format("array '{}' has {} values, expected {} points x {} components", array.name,
+                       array.values.size(), n, array.components));
+    }
+  }
+  for (const PointArrayI32& array : frame.int_arrays) {
+    if (array.values.size() != n) {
+      fail(
+          fmt::format("array '{}' has {} values, expected {}", array.name, array.values.size(), n));
+    }
+  }
+}
+
+}  // namespace
+
+void write_vtp(const std::string& path, const PolyFrame& frame) {
+  check_sizes(path, frame);
+  const size_t n = frame.points.size() / 3;
+
+  // Offsets count from the byte after the '_' that opens the appended data.
+  uint64_t offset = 0;
+  auto next_offset = [&offset](uint64_t bytes) {
+    const uint64_t at = offset;
+    offset += sizeof(uint64_t) + bytes;
+    return at;
+  };
+
+  std::string xml = fmt::format(
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n"
+      "  <PolyData>\n"
+      "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
+      "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+      "      <PointData>\n",
+      n);
+  for (const PointArrayF32& array : frame.float_arrays) {
+    xml += fmt::format(
+        "        <DataArray type=\"Float32\" Name=\"{}\" NumberOfComponents=\"{}\" "
+        "format=\"appended\" offset=\"{}\"/>\n",
+        xml_escape(array.name), array.components, next_offset(array.values.size() * sizeof(float)));
+  }
+  for (const PointArrayI32& array : frame.int_arrays) {
+    xml += fmt::format(
+        "        <DataArray type=\"Int32\" Name=\"{}\" format=\"appended\" offset=\"{}\"/>\n",
+        xml_escape(array.name), next_offset(array.values.size() * sizeof(int32_t)));
+  }
+  xml += fmt::format(
+      "      </PointData>\n"
+      "      <Points>\n"
+      "        <DataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\" "
+      "format=\"appended\" offset=\"{}\"/>\n"
+      "      </Points>\n",
+      next_offset(n * 3 * sizeof(float)));
+  // Separate statements: the order in which function arguments are evaluated is unspecified.
+  const uint64_t connectivity_offset = next_offset(n * sizeof(int64_t));
+  const uint64_t offsets_offset = next_offset(n * sizeof(int64_t));
+  xml += fmt::format(
+      "      <Verts>\n"
+      "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" "
+      "offset=\"{}\"/>\n"
+      "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"{}\"/>\n"
+      "      </Verts>\n"
+      "    </Piece>\n"
+      "  </PolyData>\n"
+      "  <AppendedData encoding=\"raw\">\n"
+      "   _",
+      connectivity_offset, offsets_offset);
+
+  AtomicFile out(path);
+  out.write(xml);
+  for (const PointArrayF32& array : frame.float_arrays) {
+    write_block(out, array.values.data(), array.values.size() * sizeof(float));
+  }
+  for (const PointArrayI32& array : frame.int_arrays) {
+    write_block(out, array.values.data(), array.values.size() * sizeof(int32_t));
+  }
+  write_block(out, frame.points.data(), frame.points.size() * sizeof(float));
+  write_iota_block(out, 0, static_cast<int64_t>(n));  // connectivity: vertex i is point i
+  write_iota_block(out, 1, static_cast<int64_t>(n));  // offsets: end of each one-point cell
+  out.write("\n  </AppendedData>\n</VTKFile>\n");
+  out.commit();
+}
+
+PvdSeries::PvdSeries(std::string path) : path_(std::move(path)) {}
+
+void PvdSeries::add(double time, const std::string& file_relative_to_pvd) {
+  entries_.emplace_back(time, file_relative_to_pvd);
+  std::string xml =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <Collection>\n";
+  for (const auto& [entry_time, file] : entries_) {
+    xml += fmt::format("    <DataSet timestep=\"{:.9g}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                       entry_time, xml_escape(file));
+  }
+  xml +=
+      "  </Collection>\n"
+      "</VTKFile>\n";
+  write_file_atomically(path_, xml);
+}
+
+const std::string& PvdSeries::path() const {
+  return path_;
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+  AtomicFile out(path);
+  out.write(text);
+  out.commit();
+}
+
+}  // namespace sluice::io

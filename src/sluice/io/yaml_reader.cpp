@@ -1,0 +1,264 @@
+#include "sluice/io/yaml_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sluice::io {
+
+int line_of(const YAML::Node& node) {
+  const YAML::Mark mark = node.Mark();
+  return mark.is_null() ? 0 : mark.line + 1;
+}
+
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+  auto distance = [](const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j) {
+        const size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diagonal = above;
+      }
+    }
+    return row[b.size()];
+  };
+  std::string best;
+  size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+  for (const auto& candidate : candidates) {
+    const size_t d = distance(word, candidate);
+    if (d < best_distance) {
+      best_distance = d;
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+MapReader::MapReader(std::shared_ptr<const YamlSource> source, const YAML::Node& node,
+                     std::string path, int line)
+    : source_(std::move(source)), node_(node), path_(std::move(path)), line_(line) {
+  if (!node_.IsMap()) {
+    const int at = io::line_of(node_) > 0 ? io::line_of(node_) : line_;
+    throw InputError(file_for(path_), at, path_.empty() ? "(top level)" : path_,
+                     "expected a mapping of keys to values");
+  }
+}
+
+std::string MapReader::path_of(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+std::string MapReader::file_for(const std::string& full_path) const {
+  for (const auto& p : source_->overridden_paths) {
+    if (full_path == p || full_path.rfind(p + ".", 0) == 0) return "--set " + p;
+  }
+  return source_->file;
+}
+
+bool MapReader::has(const std::string& key) const {
+  const YAML::Node child = node_[key];
+  return child.IsDefined() && !child.IsNull();
+}
+
+int MapReader::line_of(const std::string& key) const {
+  const YAML::Node child = node_[key];
+  if (child.IsDefined()) {
+    const int line = io::line_of(child);
+    if (line > 0) return line;
+  }
+  return line_;
+}
+
+void MapReader::fail(const std::string& key, const std::string& problem) const {
+  const std::string full = path_of(key);
+  throw InputError(file_for(full), line_of(key), full, problem);
+}
+
+void MapReader::fail_here(const std::string& problem) const {
+  throw InputError(file_for(path_), line_, path_.empty() ? "(top level)" : path_, problem);
+}
+
+namespace {
+template <class T>
+const char* type_name();
+template <>
+const char* type_name<double>() {
+  return "a number";
+}
+template <>
+const char* type_name<int>() {
+  return "an integer";
+}
+template <>
+const char* type_name<bool>() {
+  return "true or false";
+}
+template <>
+const char* type_name<std::string>() {
+  return "a text value";
+}
+}  // namespace
+
+template <class T>
+T MapReader::required(const std::string& key) {
+  if (!has(key)) fail(key, "missing required key");
+  used_.insert(key);
+  const YAML::Node child = node_[key];
+  if constexpr (std::is_same_v<T, Vec3>) {
+    const int dim = source_->dimension;
+    if (!child.IsSequence() || (child.size() != 3 && static_cast<int>(child.size()) != dim)) {
+      fail(key, dim == 2 ? "expected a vector [x, z] (or [x, y, z] with y ignored)"
+                         : "expected a vector [x, y, z]");
+    }
+    Vec3 v = Vec3::Zero();
+    for (size_t i = 0; i < child.size(); ++i) {
+      double value = 0;
+      if (!YAML::convert<double>::decode(child[i], value) || !std::isfinite(value)) {
+        fail(key, fmt::format("component {} is not a number", i + 1));
+      }
+      v[static_cast<int>(i)] = value;
+    }
+    if (child.size() == 2) v = Vec3(v[0], 0.0, v[1]);
+    return v;
+  } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+    if (!child.IsSequence()) fail(key, "expected a list of text values");
+    std::vector<std::string> out;
+    for (const auto& item : child) {
+      if (!item.IsScalar()) fail(key, "expected a list of text values");
+      out.push_back(item.as<std::string>());
+    }
+    return out;
+  } else {
+    T value{};
+    if (!child.IsScalar() || !YAML::convert<T>::decode(child, value)) {
+      fail(key, fmt::format("expected {}, got '{}'", type_name<T>(),
+                            child.IsScalar() ? child.Scalar() : std::string("a collection")));
+    }
+    if constexpr (std::is_same_v<T, double>) {
+      if (!std::isfinite(value)) fail(key, "expected a finite number");
+    }
+    return value;
+  }
+}
+
+template double MapReader::required<double>(const std::string&);
+template int MapReader::required<int>(const std::string&);
+template bool MapReader::required<bool>(const std::string&);
+template std::string MapReader::required<std::string>(const std::string&);
+template Vec3 MapReader::required<Vec3>(const std::string&);
+template std::vector<std::string> MapReader::required<std::vector<std::string>>(const std::string&);
+
+double MapReader::required_positive(const std::string& key) {
+  const double value = required<double>(key);
+  if (!(value > 0)) fail(key, fmt::format("must be greater than zero, got {}", value));
+  return value;
+}
+
+double MapReader::optional_positive(const std::string& key, double fallback) {
+  return has(key) ? required_positive(key) : fallback;
+}
+
+double MapReader::optional_non_negative(const std::string& key, double fallback) {
+  if (!has(key)) return fallback;
+  const double value = required<double>(key);
+  if (value < 0) fail(key, fmt::format("must not be negative, got {}", value));
+  return value;
+}
+
+MapReader MapReader::map(const std::string& key) {
+  if (!has(key)) fail(key, "missing required key");
+  used_.insert(key);
+  return MapReader(source_, node_[key], path_of(key), line_of(key));
+}
+
+YAML::Node MapReader::node(const std::string& key) {
+  used_.insert(key);
+  return node_[key];
+}
+
+std::vector<MapReader> MapReader::list_of_maps(const std::string& key) {
+  std::vector<MapReader> out;
+  if (!has(key)) return out;
+  used_.insert(key);
+  const YAML::Node list = node_[key];
+  if (!list.IsSequence()) fail(key, "expected a list");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const int line = io::line_of(list[i]) > 0 ? io::line_of(list[i]) : line_of(key);
+    out.emplace_back(source_, list[i], fmt::format("{}[{}]", path_of(key), i), line);
+  }
+  return out;
+}
+
+void MapReader::finish() const {
+  std::vector<std::string> known(used_.begin(), used_.end());
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.as<std::string>();
+    if (used_.count(key)) continue;
+    const std::string full = path_of(key);
+    const int line = io::line_of(entry.first) > 0 ? io::line_of(entry.first) : line_;
+    std::string problem = "unknown key";
+    const std::string suggestion = closest_match(key, known);
+    if (!suggestion.empty()) problem += fmt::format(" (did you mean '{}'?)", suggestion);
+    throw InputError(file_for(full), line, full, problem);
+  }
+}
+
+std::string apply_override(YAML::Node& root, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw InputError("--set " + assignment, 0, "",
+                     "expected KEY.PATH=VALUE, for example model.alpha=0.02");
+  }
+  const std::string path = assignment.substr(0, equals);
+  const std::string text = assignment.substr(equals + 1);
+  YAML::Node value;
+  try {
+    value = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError("--set " + path, 0, path, "value is not valid YAML: " + e.msg);
+  }
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (true) {
+    const size_t dot = path.find('.', start);
+    parts.push_back(path.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  // yaml-cpp nodes are handles: walk down by reassigning a handle, never by copying values.
+  std::vector<YAML::Node> chain{root};
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    YAML::Node current = chain.back();
+    const std::string& part = parts[i];
+    if (part.empty()) throw InputError("--set " + path, 0, path, "empty key in path");
+    if (current.IsSequence()) {
+      const size_t index = std::stoul(part);
+      if (index >= current.size()) {
+        throw InputError("--set " + path, 0, path, fmt::format("no list entry {}", index));
+      }
+      chain.push_back(current[index]);
+    } else {
+      if (!current[part].IsDefined() || current[part].IsNull()) current[part] = YAML::Node();
+      chain.push_back(current[part]);
+    }
+  }
+  YAML::Node parent = chain.back();
+  const std::string& last = parts.back();
+  if (parent.IsSequence()) {
+    const size_t index = std::stoul(last);
+    if (index >= parent.size()) {
+      throw InputError("--set " + path, 0, path, fmt::format("no list entry {}", index));
+    }
+    parent[index] = value;
+  } else {
+    parent[last] = value;
+  }
+  return path;
+}
+
+}  // namespace sluice::io

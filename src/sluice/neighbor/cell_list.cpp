@@ -1,0 +1,44 @@
+#include "sluice/neighbor/cell_list.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "sluice/exec/policy.hpp"
+
+namespace sluice {
+
+template <int D>
+CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real cell_size)
+    : lo_(lo), cell_size_(cell_size), inverse_cell_size_(1.0 / cell_size) {
+  std::size_t total = 1;
+  for (int a = 0; a < D; ++a) {
+    counts_[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) * inverse_cell_size_)) + 3;
+    total *= static_cast<std::size_t>(counts_[a]);
+  }
+  if (total > (std::size_t{1} << 31)) {
+    throw std::runtime_error("the domain holds too many neighbour cells; enlarge the spacing");
+  }
+  cell_start_.assign(total + 1, 0);
+}
+
+template <int D>
+void CellList<D>::sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order) {
+  const std::size_t n = positions.size();
+  cell_of_.resize(n);
+  exec::Default::for_each(n, [&](std::size_t i) {
+    cell_of_[i] = static_cast<std::uint32_t>(linear(cell_coords(positions[i])));
+  });
+  // Counting sort: stable, so particles keep their relative order within a cell and the
+  // result does not depend on the thread count.
+  std::fill(cell_start_.begin(), cell_start_.end(), 0);
+  for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
+  for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+  order.resize(n);
+  std::vector<std::uint32_t> next(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order[next[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+template class CellList<2>;
+template class CellList<3>;
+
+}  // namespace sluice

@@ -1,0 +1,56 @@
+#include "sluice/sim/divergence_guard.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "sluice/exec/policy.hpp"
+
+namespace sluice {
+
+namespace {
+template <int D>
+const char* problem_of(const SimulationState<D>& s, std::size_t i) {
+  const auto& ps = s.particles;
+  if (!ps.position[i].allFinite()) return "its position is not finite";
+  if (!ps.velocity[i].allFinite()) return "its velocity is not finite";
+  if (!std::isfinite(ps.density[i]) || !std::isfinite(ps.pressure[i])) {
+    return "its density or pressure is not finite";
+  }
+  if (ps.is_fluid(i) && !s.escape_box.contains(to_3d<D>(ps.position[i]), D))
+    return "it left the domain";
+  return nullptr;
+}
+}  // namespace
+
+template <int D>
+std::optional<std::string> DivergenceGuard<D>::check(const SimulationState<D>& s) const {
+  // The first bad particle by index, found in parallel; the same on any thread count.
+  const double first = -exec::Default::max_of(s.particles.size(), [&](std::size_t i) {
+    return problem_of(s, i) ? -static_cast<double>(i) : -std::numeric_limits<double>::infinity();
+  });
+  if (!std::isfinite(first)) return std::nullopt;
+  const auto i = static_cast<std::size_t>(first);
+  const Vec3 x = to_3d<D>(s.particles.position[i]);
+  return fmt::format(
+      "the run diverged at step {}, t = {:.6g} s: particle {} at ({:.4g}, {:.4g}, {:.4g}): {}",
+      s.step, s.time, i, x[0], x[1], x[2], problem_of(s, i));
+}
+
+template <int D>
+void DivergenceGuard<D>::remember(const SimulationState<D>& s) {
+  const auto& ps = s.particles;
+  last_good_.position = ps.position;
+  last_good_.velocity = ps.velocity;
+  last_good_.density = ps.density;
+  last_good_.pressure = ps.pressure;
+  last_good_.mass.clear();
+  last_good_.kind = ps.kind;
+  last_good_time_ = s.time;
+}
+
+template class DivergenceGuard<2>;
+template class DivergenceGuard<3>;
+
+}  // namespace sluice

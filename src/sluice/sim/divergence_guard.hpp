@@ -1,0 +1,30 @@
+// Stops a run that has gone wrong: a non-finite position, velocity, density or pressure, or a
+// fluid particle outside the domain. Keeps a copy of the last good state, so the frame written
+// on the way out shows the flow just before it broke.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "sluice/sim/state.hpp"
+
+namespace sluice {
+
+template <int D>
+class DivergenceGuard {
+ public:
+  // The problem with the state, or nothing when it is sound.
+  std::optional<std::string> check(const SimulationState<D>& s) const;
+
+  // Remembers `s` as the last good state.
+  void remember(const SimulationState<D>& s);
+
+  const ParticleSet<D>& last_good() const { return last_good_; }
+  double last_good_time() const { return last_good_time_; }
+
+ private:
+  ParticleSet<D> last_good_;
+  double last_good_time_ = 0;
+};
+
+}  // namespace sluice

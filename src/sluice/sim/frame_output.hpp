@@ -1,0 +1,29 @@
+// Writes the particles as a VTK frame (OUT/frames/frame_NNNNNN.vtp) and lists it in the
+// ParaView series OUT/CASE.pvd. Arrays: velocity, pressure, density, kind (docs/output.md).
+#pragma once
+
+#include <string>
+
+#include "sluice/io/vtk_writer.hpp"
+#include "sluice/particles/particle_set.hpp"
+
+namespace sluice {
+
+class FrameOutput {
+ public:
+  // Creates OUT/frames (throws InputError naming the directory if it cannot be created).
+  FrameOutput(const std::string& out_dir, const std::string& case_name);
+
+  template <int D>
+  void write(const ParticleSet<D>& particles, double time);
+
+  int frames_written() const { return frame_count_; }
+  const std::string& series_path() const { return series_.path(); }
+
+ private:
+  std::string out_dir_;
+  io::PvdSeries series_;
+  int frame_count_ = 0;
+};
+
+}  // namespace sluice

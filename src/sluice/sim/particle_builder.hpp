@@ -1,0 +1,20 @@
+// Turns a validated case into particles: fluid blocks on a lattice with hydrostatic pressure,
+// walls as layers of boundary particles thick enough to fill a fluid particle's support.
+#pragma once
+
+#include "sluice/io/case_config.hpp"
+#include "sluice/sim/state.hpp"
+
+namespace sluice {
+
+// Builds the state's particles, sorted by cell. Throws InputError when no fluid particle
+// remains (blocks empty or entirely inside walls).
+template <int D>
+SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_radius);
+
+// Number of boundary-particle layers needed behind a wall for a given interaction radius.
+inline int wall_layers(Real interaction_radius, Real dx) {
+  return static_cast<int>(std::ceil(interaction_radius / dx - 1e-9));
+}
+
+}  // namespace sluice

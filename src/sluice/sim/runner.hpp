@@ -1,0 +1,55 @@
+// Running a case from start to end: steps, frames, probes, progress, summary and statistics.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sluice/core/stage_timer.hpp"
+#include "sluice/io/case_config.hpp"
+
+namespace sluice {
+
+struct RunOptions {
+  std::string out_dir;             // created if missing
+  std::optional<double> end_time;  // overrides the case's end_time
+  std::string stats_path;          // JSON statistics, if not empty
+  bool live_progress = false;      // redraw one progress line (terminal)
+  bool quiet = false;              // no progress and no summary
+};
+
+struct RunSummary {
+  std::size_t particles = 0;
+  std::size_t fluid_particles = 0;
+  long steps = 0;
+  double simulated_time = 0;
+  double wall_seconds = 0;
+  int frames = 0;
+  int threads = 1;
+  std::vector<StageTimers::Entry> stages;
+  std::string series_path;
+
+  double particle_steps_per_second() const {
+    return wall_seconds > 0 ? static_cast<double>(particles) * steps / wall_seconds : 0;
+  }
+};
+
+// Runs the case. Throws InputError for bad input and DivergenceError (after writing the
+// last good frame) when the run diverges.
+RunSummary run_case(const io::CaseConfig& config, const RunOptions& options);
+
+struct CheckSummary {
+  std::size_t particles = 0;
+  std::size_t fluid_particles = 0;
+  std::size_t wall_particles = 0;
+  double first_time_step = 0;
+  std::string model;
+};
+
+// Builds the case's particles and model without running a step.
+CheckSummary check_case(const io::CaseConfig& config);
+
+// The statistics JSON written by --stats.
+std::string stats_json(const RunSummary& summary);
+
+}  // namespace sluice

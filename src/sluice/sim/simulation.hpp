@@ -1,0 +1,43 @@
+// A simulation: the state, the fluid model and the step as a list of named, timed stages.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sluice/core/stage_timer.hpp"
+#include "sluice/fluid/fluid_model.hpp"
+#include "sluice/io/case_config.hpp"
+#include "sluice/sim/state.hpp"
+
+namespace sluice {
+
+template <int D>
+class Simulation {
+ public:
+  // Builds the model and the particles from a validated case (throws InputError).
+  explicit Simulation(const io::CaseConfig& config);
+
+  // Advances by one step of the model's stable size, clipped so as not to pass `until`.
+  void step(double until);
+
+  SimulationState<D>& state() { return state_; }
+  const SimulationState<D>& state() const { return state_; }
+  const FluidModel<D>& model() const { return *model_; }
+  const StageTimers& timers() const { return timers_; }
+  StageTimers& timers() { return timers_; }
+  const io::CaseConfig& config() const { return config_; }
+  double next_time_step() const { return model_->next_time_step(state_); }
+  std::vector<std::string> stage_names() const;
+
+ private:
+  io::CaseConfig config_;
+  std::unique_ptr<FluidModel<D>> model_;
+  SimulationState<D> state_;
+  std::vector<std::unique_ptr<Stage<D>>> stages_;
+  StageTimers timers_;
+  std::vector<std::size_t> slots_;
+  std::vector<std::uint32_t> order_;
+};
+
+}  // namespace sluice

@@ -1,0 +1,26 @@
+// Shared set-up for the physics checks: load a shipped case, run it in-process.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sluice/io/case_config.hpp"
+#include "sluice/sim/simulation.hpp"
+
+namespace sluice::testing {
+
+inline io::CaseConfig load_case(const std::string& name,
+                                const std::vector<std::string>& overrides = {}) {
+  return io::read_case(std::string(SLUICE_SOURCE_DIR) + "/cases/" + name, overrides);
+}
+
+// Runs until `end`, calling observe(state) after every step.
+template <int D, class Observe>
+void run_until(Simulation<D>& sim, double end, Observe&& observe) {
+  while (sim.state().time < end * (1 - 1e-12)) {
+    sim.step(end);
+    observe(sim.state());
+  }
+}
+
+}  // namespace sluice::testing

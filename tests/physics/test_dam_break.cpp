@@ -1,0 +1,60 @@
+// F2 of VALIDATION.md: 2D dam break, surge front against Koshizuka & Oka (1996).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "physics_support.hpp"
+#include "sluice/sim/probes.hpp"
+
+namespace sluice {
+namespace {
+
+std::vector<std::pair<double, double>> reference_front() {
+  std::ifstream in(std::string(SLUICE_SOURCE_DIR) +
+                   "/validation/data/dam_break_front_koshizuka_oka_1996.tsv");
+  std::vector<std::pair<double, double>> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    double t = 0, x = 0;
+    if (fields >> t >> x) out.emplace_back(t, x);
+  }
+  return out;
+}
+
+TEST(DamBreak2D, SurgeFrontMatchesExperiment) {
+  const auto reference = reference_front();
+  ASSERT_GE(reference.size(), 10u);
+  const io::CaseConfig config = testing::load_case("dam_break_2d.yaml");
+  Simulation<2> sim(config);
+  io::ProbeConfig front;
+  front.kind = io::ProbeKind::kSurgeFront;
+  Probes<2> probe({front}, "", sim.model().interaction_radius());
+
+  std::vector<double> times{0}, fronts{probe.measure(sim.state())[0]};
+  testing::run_until(sim, 0.72, [&](const SimulationState<2>& s) {
+    times.push_back(s.time);
+    fronts.push_back(probe.measure(s)[0]);
+  });
+  double sum2 = 0;
+  int count = 0;
+  for (const auto& [t, x] : reference) {
+    if (t > 0.70) continue;
+    const auto k =
+        static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
+    ASSERT_GT(k, 0u);
+    const double w = (t - times[k - 1]) / (times[k] - times[k - 1]);
+    const double simulated = fronts[k - 1] + w * (fronts[k] - fronts[k - 1]);
+    sum2 += (simulated - x) * (simulated - x);
+    ++count;
+  }
+  const double rms = std::sqrt(sum2 / count);
+  RecordProperty("front_rms_m", std::to_string(rms));
+  std::printf("F2 surge-front RMS error over %d reference points: %.3f m\n", count, rms);
+  EXPECT_LT(rms, 0.30);
+}
+
+}  // namespace
+}  // namespace sluice

@@ -1,0 +1,51 @@
+// F1 of VALIDATION.md: a still tank stays still, with the hydrostatic pressure.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics_support.hpp"
+#include "sluice/sim/probes.hpp"
+
+namespace sluice {
+namespace {
+
+TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
+  const io::CaseConfig config = testing::load_case("hydrostatic_2d.yaml");
+  Simulation<2> sim(config);
+  const double g = 9.81, rho0 = config.fluid.density, depth = 1.0;
+  double worst_speed = 0;
+  testing::run_until(sim, 2.0, [&](const SimulationState<2>& s) {
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+      if (s.particles.is_fluid(i))
+        worst_speed = std::max(worst_speed, s.particles.velocity[i].norm());
+    }
+  });
+  const auto& s = sim.state();
+  ASSERT_NEAR(s.time, 2.0, 1e-12);
+
+  // Bottom pressure: the fluid's pressure interpolated at the floor.
+  io::ProbeConfig bottom;
+  bottom.kind = io::ProbeKind::kPressure;
+  bottom.point = Vec3(0.5, 0, 0);
+  Probes<2> probe({bottom}, "", sim.model().interaction_radius());
+  const double p_bottom = probe.measure(s)[0];
+  EXPECT_NEAR(p_bottom, rho0 * g * depth, 0.03 * rho0 * g * depth);
+
+  // Profile: L2 of the particle pressures against rho g (H - z), relative to rho g H.
+  double error2 = 0, scale2 = 0;
+  std::size_t outside = 0;
+  for (std::size_t i = 0; i < s.particles.size(); ++i) {
+    if (!s.particles.is_fluid(i)) continue;
+    const auto& x = s.particles.position[i];
+    const double expected = rho0 * g * (depth - x[1]);
+    error2 += std::pow(s.particles.pressure[i] - expected, 2);
+    scale2 += std::pow(rho0 * g * depth, 2);
+    if (x[0] < 0 || x[0] > 1 || x[1] < 0) ++outside;
+  }
+  EXPECT_LT(std::sqrt(error2 / scale2), 0.03);
+  EXPECT_EQ(outside, 0u);
+  EXPECT_LT(worst_speed, 0.01 * std::sqrt(g * depth)) << "largest speed over the whole run";
+}
+
+}  // namespace
+}  // namespace sluice
