@@ -8,11 +8,11 @@
 namespace sluice {
 
 template <int D>
-CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real cell_size)
-    : lo_(lo), cell_size_(cell_size), inverse_cell_size_(1.0 / cell_size) {
+CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius)
+    : lo_(lo), cell_size_(radius / kReach), inverse_cell_size_(kReach / radius) {
   std::size_t total = 1;
   for (int a = 0; a < D; ++a) {
-    counts_[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) * inverse_cell_size_)) + 3;
+    counts_[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) * inverse_cell_size_)) + 1 + 2 * kReach;
     total *= static_cast<std::size_t>(counts_[a]);
   }
   if (total > (std::size_t{1} << 31)) {

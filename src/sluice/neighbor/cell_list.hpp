@@ -1,8 +1,10 @@
-// Cell-linked-list neighbour search. Particles are sorted by cell (x fastest), so the three
-// cells of a row along x are one contiguous index range: a 3D query scans 9 ranges, a 2D
-// query 3, and neighbours sit close in memory.
+// Cell-linked-list neighbour search. Cells are half the search radius, which cuts the volume
+// scanned per query from 27 r^3 to 15.6 r^3 in 3D. Particles are sorted by cell (x fastest), so
+// the five cells of a row along x are one contiguous index range: a 3D query scans 25 ranges,
+// a 2D query 5, and neighbours sit close in memory.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -15,19 +17,19 @@ template <int D>
 class CellList {
  public:
   CellList() = default;
-  // Cells of edge >= `cell_size` cover [lo, hi]; positions outside are clamped to the border
+  // Cells of edge radius / 2 cover [lo, hi]; positions outside are clamped to the border
   // cells, so a stray particle is still found (the divergence guard reports it).
-  CellList(const Vec<D>& lo, const Vec<D>& hi, Real cell_size);
+  CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius);
 
   // Sorts particles by cell: fills `order` (new index k holds old particle order[k]).
   // Call reorder on the particle set with it, then `positions` are sorted.
   void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order);
 
-  Real cell_size() const { return cell_size_; }
+  Real radius() const { return kReach * cell_size_; }
   std::size_t cell_count() const { return cell_start_.empty() ? 0 : cell_start_.size() - 1; }
 
   // Calls fn(j, r_ij, r2) for every particle j != i with |r_i - r_j|^2 < radius2
-  // (r_ij = r_i - r_j). radius must not exceed the cell size.
+  // (r_ij = r_i - r_j). radius2 must not exceed radius()^2.
   template <class Fn>
   void for_each_neighbor(const std::vector<Vec<D>>& positions, std::size_t i, Real radius2,
                          Fn&& fn) const {
@@ -43,26 +45,27 @@ class CellList {
                      Fn&& fn) const {
     const auto c = cell_coords(x);
     if constexpr (D == 2) {
-      for (int dz = -1; dz <= 1; ++dz) {
+      for (int dz = -kReach; dz <= kReach; ++dz) {
         const std::size_t row = linear(c[0], c[1] + dz);
-        scan(positions, x, radius2, cell_start_[row - 1], cell_start_[row + 2], fn);
+        scan(positions, x, radius2, cell_start_[row - kReach], cell_start_[row + kReach + 1], fn);
       }
     } else {
-      for (int dz = -1; dz <= 1; ++dz) {
-        for (int dy = -1; dy <= 1; ++dy) {
+      for (int dz = -kReach; dz <= kReach; ++dz) {
+        for (int dy = -kReach; dy <= kReach; ++dy) {
           const std::size_t row = linear(c[0], c[1] + dy, c[2] + dz);
-          scan(positions, x, radius2, cell_start_[row - 1], cell_start_[row + 2], fn);
+          scan(positions, x, radius2, cell_start_[row - kReach], cell_start_[row + kReach + 1], fn);
         }
       }
     }
   }
 
-  // The cell of a position, clamped to the interior so that all 3^D neighbours exist.
+  // The cell of a position, clamped to the interior so that all scanned cells exist.
   std::array<int, D> cell_coords(const Vec<D>& x) const {
     std::array<int, D> c{};
     for (int a = 0; a < D; ++a) {
-      const int k = static_cast<int>((x[a] - lo_[a]) * inverse_cell_size_) + 1;
-      c[a] = k < 1 ? 1 : (k > counts_[a] - 2 ? counts_[a] - 2 : k);
+      const Real offset = (x[a] - lo_[a]) * inverse_cell_size_;
+      const int k = (offset < 0 ? 0 : static_cast<int>(std::min<Real>(offset, counts_[a]))) + kReach;
+      c[a] = std::min(k, counts_[a] - 1 - kReach);
     }
     return c;
   }
@@ -93,7 +96,8 @@ class CellList {
   Vec<D> lo_ = Vec<D>::Zero();
   Real cell_size_ = 0;
   Real inverse_cell_size_ = 0;
-  std::array<int, D> counts_{};  // including one padding cell on each side
+  static constexpr int kReach = 2;  // cells scanned on each side of a particle's cell
+  std::array<int, D> counts_{};     // including kReach padding cells on each side
   std::vector<std::uint32_t>
       cell_start_;                      // particles of cell c: [cell_start_[c], cell_start_[c+1])
   std::vector<std::uint32_t> cell_of_;  // scratch: cell of each particle before sorting

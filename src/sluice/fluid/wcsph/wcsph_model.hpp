@@ -41,6 +41,8 @@ class WcsphModel final : public FluidModel<D> {
     half_velocity_ = ps.add_vector_field();
     half_density_ = ps.add_scalar_field();
     wall_velocity_ = ps.add_vector_field();
+    pressure_term_ = ps.add_scalar_field();
+    volume_ = ps.add_scalar_field();
     // The builder set a hydrostatic pressure; the density follows from the equation of state.
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (ps.is_fluid(i)) ps.density[i] = eos_.density(ps.pressure[i]);
@@ -152,8 +154,16 @@ class WcsphModel final : public FluidModel<D> {
 
   // Continuity with density diffusion and the momentum equation, gathered per fluid particle
   // (each pair evaluated from both sides, so no two threads write the same particle).
+  // Per-particle factors are computed first so the pair loop has a single division.
   void compute_rates(SimulationState<D>& s) {
     auto& ps = s.particles;
+    auto& pressure_term = ps[pressure_term_];
+    auto& volume = ps[volume_];
+    exec::Default::for_each(ps.size(), [&](std::size_t j) {
+      const Real inverse_rho = 1 / ps.density[j];
+      pressure_term[j] = ps.pressure[j] * inverse_rho * inverse_rho;
+      volume[j] = ps.mass[j] * inverse_rho;
+    });
     auto& acceleration = ps[acceleration_];
     auto& density_rate = ps[density_rate_];
     const auto& wall_velocity = ps[wall_velocity_];
@@ -161,12 +171,11 @@ class WcsphModel final : public FluidModel<D> {
     const Real radius2 = kernel_.support() * kernel_.support();
     const Real eta2 = 0.01 * h * h;
     const Real c0 = eos_.c0;
-    const Real alpha_c0_h = p_.artificial_viscosity * c0 * h;
+    const Real two_alpha_c0_h = 2 * p_.artificial_viscosity * c0 * h;
     // Molteni & Colagrossi (2009) diffusion, with the hydrostatic part of the density
     // difference removed (Fourtakas et al. 2019), linearised: rho_H_ji = rho0 g.r_ji / c0^2.
     const Real diffusion = -2 * p_.density_diffusion * h * c0;
-    const Vec<D> hydrostatic =
-        -(eos_.rho0 / (c0 * c0)) * s.gravity;  // rho_H_ji = hydrostatic . r_ij
+    const Vec<D> hydrostatic = -(eos_.rho0 / (c0 * c0)) * s.gravity;  // rho_H_ji = this . r_ij
     const Real two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
     const bool no_slip = p_.no_slip;
     const Vec<D> g = s.gravity;
@@ -174,30 +183,28 @@ class WcsphModel final : public FluidModel<D> {
       if (!ps.is_fluid(i)) return;
       const Vec<D> v_i = ps.velocity[i];
       const Real rho_i = ps.density[i];
-      const Real p_over_rho2_i = ps.pressure[i] / (rho_i * rho_i);
+      const Real laminar_i = two_nu_rho0 / rho_i;
+      const Real pressure_term_i = pressure_term[i];
       Vec<D> acc = Vec<D>::Zero();
       Real drho = 0;
-      s.cells.for_each_neighbor(
-          ps.position, i, radius2, [&](std::size_t j, const Vec<D>& r_ij, Real r2) {
-            const Real f = kernel_.gradient_factor(std::sqrt(r2));
-            const Real m_j = ps.mass[j];
-            const Real rho_j = ps.density[j];
-            const bool fluid_j = ps.is_fluid(j);
-            const Vec<D> v_ij = v_i - ps.velocity[j];
-            const Real r_dot_grad = r2 * f;  // r_ij . grad W
-            drho += m_j * f * v_ij.dot(r_ij);
-            Real coefficient = p_over_rho2_i + ps.pressure[j] / (rho_j * rho_j);
-            if (fluid_j) {
-              drho += diffusion * (rho_j - rho_i - hydrostatic.dot(r_ij)) * f * (m_j / rho_j);
-            }
-            if (fluid_j || no_slip) {
-              const Vec<D> v_visc = fluid_j ? v_ij : Vec<D>(v_i - wall_velocity[j]);
-              const Real vr = v_visc.dot(r_ij);
-              if (vr < 0) coefficient -= alpha_c0_h * vr / ((r2 + eta2) * 0.5 * (rho_i + rho_j));
-              acc += (m_j * two_nu_rho0 / (rho_i * rho_j) * r_dot_grad / (r2 + eta2)) * v_visc;
-            }
-            acc -= (m_j * coefficient * f) * r_ij;
-          });
+      s.cells.for_each_neighbor(ps.position, i, radius2, [&](std::size_t j, const Vec<D>& r_ij, Real r2) {
+        const Real f = kernel_.gradient_factor(std::sqrt(r2));
+        const Real v_j = volume[j];
+        const Real rho_j = ps.density[j];
+        const bool fluid_j = ps.is_fluid(j);
+        const Vec<D> v_ij = v_i - ps.velocity[j];
+        drho += rho_j * v_j * f * v_ij.dot(r_ij);  // m_j v_ij . grad W
+        Real coefficient = pressure_term_i + pressure_term[j];
+        if (fluid_j) drho += diffusion * (rho_j - rho_i - hydrostatic.dot(r_ij)) * f * v_j;
+        if (fluid_j || no_slip) {
+          const Vec<D> v_visc = fluid_j ? v_ij : Vec<D>(v_i - wall_velocity[j]);
+          const Real vr = v_visc.dot(r_ij);
+          const Real inverse_r2 = 1 / (r2 + eta2);
+          if (vr < 0) coefficient -= two_alpha_c0_h * vr * inverse_r2 / (rho_i + rho_j);
+          acc += (v_j * laminar_i * r2 * f * inverse_r2) * v_visc;
+        }
+        acc -= (rho_j * v_j * coefficient * f) * r_ij;
+      });
       acceleration[i] = acc + g;
       density_rate[i] = drho;
     });
@@ -208,6 +215,7 @@ class WcsphModel final : public FluidModel<D> {
   TaitEquation eos_;
   FieldHandle<Vec<D>> acceleration_, half_velocity_, wall_velocity_;
   FieldHandle<Real> density_rate_, half_density_;
+  FieldHandle<Real> pressure_term_, volume_;  // p / rho^2 and m / rho, refreshed every step
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
 };

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Sets up (Debian packages), builds, and runs every test: the release build's unit, physics,
+# command-line and output tests, then the unit and command-line tests again under
+# AddressSanitizer + UndefinedBehaviorSanitizer, and a formatting check.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+jobs=$(nproc)
+
+echo "== format check"
+bad=$(find src apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format --dry-run -Werror 2>&1 | grep -c 'error:' || true)
+if [ "$bad" != "0" ]; then
+  find src apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format --dry-run -Werror
+  exit 1
+fi
+
+echo "== release build and tests"
+cmake --preset release
+cmake --build --preset release -j "$jobs"
+ctest --preset release -j "$jobs"
+
+echo "== sanitizer build (asan + ubsan) and its tests (physics excluded: too slow there)"
+cmake --preset asan
+cmake --build --preset asan -j "$jobs"
+ctest --preset asan -j "$jobs"
