@@ -56,8 +56,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? sluice::kExitOk : sluice::kExitBadInput;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    fmt::print(stderr, "error: {}\nRun with --help for more information.\n", e.what());
+    return sluice::kExitBadInput;
   }
 
   try {

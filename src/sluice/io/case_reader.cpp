@@ -27,10 +27,6 @@ AxisBox read_box(MapReader& map, int dimension) {
   return box;
 }
 
-bool inside(const AxisBox& inner, const AxisBox& outer, int dimension) {
-  return outer.contains(inner.min, dimension) && outer.contains(inner.max, dimension);
-}
-
 FluidConfig read_fluid(MapReader fluid, const CaseConfig& c) {
   FluidConfig out;
   out.density = fluid.optional_positive("density", out.density);
@@ -42,9 +38,9 @@ FluidConfig read_fluid(MapReader fluid, const CaseConfig& c) {
     b.name = block.optional<std::string>("name", fmt::format("block{}", out.blocks.size()));
     b.box = read_box(block, c.dimension);
     b.velocity = block.optional<Vec3>("velocity", Vec3::Zero());
-    if (!inside(b.box, c.domain, c.dimension)) {
-      block.fail("min", fmt::format("fluid block '{}' is not inside the domain", b.name));
-    }
+    const std::string outside = fmt::format("fluid block '{}' is not inside the domain", b.name);
+    if (!c.domain.contains(b.box.min, c.dimension)) block.fail("min", outside);
+    if (!c.domain.contains(b.box.max, c.dimension)) block.fail("max", outside);
     block.finish();
     out.blocks.push_back(b);
   }
@@ -90,7 +86,7 @@ WallConfig read_wall(MapReader& wall, const CaseConfig& c, size_t index) {
   return w;
 }
 
-ProbeConfig read_probe(MapReader& probe, size_t index) {
+ProbeConfig read_probe(MapReader& probe, size_t index, int dimension) {
   ProbeConfig p;
   p.line = probe.line();
   const std::string type = probe.required<std::string>("type");
@@ -105,6 +101,9 @@ ProbeConfig read_probe(MapReader& probe, size_t index) {
     p.kind = ProbeKind::kSurgeFront;
     const std::string axis = probe.optional<std::string>("axis", "x");
     if (axis != "x" && axis != "y") probe.fail("axis", "expected x or y");
+    if (axis == "y" && dimension == 2) {
+      probe.fail("axis", "a 2D case lies in the x-z plane: the only horizontal axis is x");
+    }
     p.axis = axis == "x" ? 0 : 1;
   } else {
     std::string problem = fmt::format(
@@ -167,7 +166,8 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   size_t index = 0;
   for (auto& wall : top.list_of_maps("walls")) c.walls.push_back(read_wall(wall, c, index++));
   index = 0;
-  for (auto& probe : top.list_of_maps("probes")) c.probes.push_back(read_probe(probe, index++));
+  for (auto& probe : top.list_of_maps("probes"))
+    c.probes.push_back(read_probe(probe, index++, c.dimension));
 
   MapReader model = top.map("model");
   c.model_name = model.required<std::string>("name");
@@ -178,6 +178,9 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
 }
 
 CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides) {
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(path, 0, "", "is a directory, not a case file");
+  }
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, "", "cannot open the case file");
   std::stringstream text;

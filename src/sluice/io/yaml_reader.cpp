@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 namespace sluice::io {
@@ -12,25 +13,26 @@ int line_of(const YAML::Node& node) {
   return mark.is_null() ? 0 : mark.line + 1;
 }
 
-std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
-  auto distance = [](const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-      size_t diagonal = row[0];
-      row[0] = i;
-      for (size_t j = 1; j <= b.size(); ++j) {
-        const size_t above = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        diagonal = above;
-      }
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
     }
-    return row[b.size()];
-  };
+  }
+  return row[b.size()];
+}
+
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
   std::string best;
   size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
   for (const auto& candidate : candidates) {
-    const size_t d = distance(word, candidate);
+    const size_t d = edit_distance(word, candidate);
     if (d < best_distance) {
       best_distance = d;
       best = candidate;
@@ -44,8 +46,19 @@ MapReader::MapReader(std::shared_ptr<const YamlSource> source, const YAML::Node&
     : source_(std::move(source)), node_(node), path_(std::move(path)), line_(line) {
   if (!node_.IsMap()) {
     const int at = io::line_of(node_) > 0 ? io::line_of(node_) : line_;
-    throw InputError(file_for(path_), at, path_.empty() ? "(top level)" : path_,
+    const std::string file = file_for(path_);
+    throw InputError(file, line_for(file, at), path_.empty() ? "(top level)" : path_,
                      "expected a mapping of keys to values");
+  }
+  // yaml-cpp keeps duplicate keys and lookups see only the first: report the second.
+  std::set<std::string> seen;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.Scalar();
+    if (seen.insert(key).second) continue;
+    const std::string full = path_of(key);
+    const std::string file = file_for(full);
+    throw InputError(file, line_for(file, io::line_of(entry.first)), full,
+                     fmt::format("appears twice (first on line {})", key_line(key)));
   }
 }
 
@@ -54,13 +67,36 @@ std::string MapReader::path_of(const std::string& key) const {
 }
 
 std::string MapReader::file_for(const std::string& full_path) const {
+  // List entries are named a.b[0] in messages and a.b.0 on the command line.
+  std::string dotted;
+  for (const char c : full_path) {
+    if (c == '[') {
+      dotted += '.';
+    } else if (c != ']') {
+      dotted += c;
+    }
+  }
   for (const auto& p : source_->overridden_paths) {
-    if (full_path == p || full_path.rfind(p + ".", 0) == 0) return "--set " + p;
+    if (dotted == p || dotted.rfind(p + ".", 0) == 0) return "--set " + p;
   }
   return source_->file;
 }
 
+int MapReader::line_for(const std::string& file, int line) {
+  return file.rfind("--set ", 0) == 0 ? 0 : line;
+}
+
+int MapReader::key_line(const std::string& key) const {
+  for (const auto& entry : node_) {
+    if (entry.first.Scalar() == key && io::line_of(entry.first) > 0) {
+      return io::line_of(entry.first);
+    }
+  }
+  return line_;
+}
+
 bool MapReader::has(const std::string& key) const {
+  asked_.insert(key);
   const YAML::Node child = node_[key];
   return child.IsDefined() && !child.IsNull();
 }
@@ -76,11 +112,32 @@ int MapReader::line_of(const std::string& key) const {
 
 void MapReader::fail(const std::string& key, const std::string& problem) const {
   const std::string full = path_of(key);
-  throw InputError(file_for(full), line_of(key), full, problem);
+  const std::string file = file_for(full);
+  throw InputError(file, line_for(file, line_of(key)), full, problem);
 }
 
 void MapReader::fail_here(const std::string& problem) const {
-  throw InputError(file_for(path_), line_, path_.empty() ? "(top level)" : path_, problem);
+  const std::string file = file_for(path_);
+  throw InputError(file, line_for(file, line_), path_.empty() ? "(top level)" : path_, problem);
+}
+
+void MapReader::fail_missing(const std::string& key) const {
+  if (node_[key].IsDefined()) {  // "key:" with nothing after it
+    const std::string full = path_of(key);
+    const std::string file = file_for(full);
+    throw InputError(file, line_for(file, key_line(key)), full, "has no value");
+  }
+  // Closer than closest_match's threshold, so that a missing 'min' is not blamed on 'max'.
+  const size_t near = std::max<size_t>(1, key.size() / 4);
+  for (const auto& entry : node_) {
+    const std::string present = entry.first.Scalar();
+    if (asked_.count(present) || edit_distance(present, key) > near) continue;
+    const std::string full = path_of(present);
+    const std::string file = file_for(full);
+    throw InputError(file, line_for(file, key_line(present)), full,
+                     fmt::format("unknown key (did you mean '{}'?)", key));
+  }
+  fail(key, "missing required key");
 }
 
 namespace {
@@ -106,7 +163,7 @@ const char* type_name<std::string>() {
 
 template <class T>
 T MapReader::required(const std::string& key) {
-  if (!has(key)) fail(key, "missing required key");
+  if (!has(key)) fail_missing(key);
   used_.insert(key);
   const YAML::Node child = node_[key];
   if constexpr (std::is_same_v<T, Vec3>) {
@@ -124,6 +181,7 @@ T MapReader::required(const std::string& key) {
       v[static_cast<int>(i)] = value;
     }
     if (child.size() == 2) v = Vec3(v[0], 0.0, v[1]);
+    if (dim == 2) v[1] = 0;  // 2D: the x-z plane; a given y is ignored everywhere
     return v;
   } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
     if (!child.IsSequence()) fail(key, "expected a list of text values");
@@ -171,7 +229,7 @@ double MapReader::optional_non_negative(const std::string& key, double fallback)
 }
 
 MapReader MapReader::map(const std::string& key) {
-  if (!has(key)) fail(key, "missing required key");
+  if (!has(key)) fail_missing(key);
   used_.insert(key);
   return MapReader(source_, node_[key], path_of(key), line_of(key));
 }
@@ -195,16 +253,21 @@ std::vector<MapReader> MapReader::list_of_maps(const std::string& key) {
 }
 
 void MapReader::finish() const {
-  std::vector<std::string> known(used_.begin(), used_.end());
+  std::vector<std::string> known(asked_.begin(), asked_.end());
   for (const auto& entry : node_) {
     const std::string key = entry.first.as<std::string>();
     if (used_.count(key)) continue;
     const std::string full = path_of(key);
-    const int line = io::line_of(entry.first) > 0 ? io::line_of(entry.first) : line_;
+    const std::string file = file_for(full);
+    const int line = line_for(file, key_line(key));
+    // An optional key given with no value: has() took it for absent.
+    if (asked_.count(key) && entry.second.IsNull()) {
+      throw InputError(file, line, full, "has no value (remove the key to use its default)");
+    }
     std::string problem = "unknown key";
     const std::string suggestion = closest_match(key, known);
     if (!suggestion.empty()) problem += fmt::format(" (did you mean '{}'?)", suggestion);
-    throw InputError(file_for(full), line, full, problem);
+    throw InputError(file, line, full, problem);
   }
 }
 
@@ -212,7 +275,7 @@ std::string apply_override(YAML::Node& root, const std::string& assignment) {
   const auto equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0) {
     throw InputError("--set " + assignment, 0, "",
-                     "expected KEY.PATH=VALUE, for example model.alpha=0.02");
+                     "expected KEY.PATH=VALUE, for example model.artificial_viscosity=0.05");
   }
   const std::string path = assignment.substr(0, equals);
   const std::string text = assignment.substr(equals + 1);
@@ -230,35 +293,60 @@ std::string apply_override(YAML::Node& root, const std::string& assignment) {
     if (dot == std::string::npos) break;
     start = dot + 1;
   }
+  for (const auto& part : parts) {
+    if (part.empty()) throw InputError("--set " + path, 0, path, "empty key in path");
+  }
+  auto prefix = [&](size_t n) {  // the first n parts, dotted
+    std::string out;
+    for (size_t i = 0; i < n; ++i) out += (i ? "." : "") + parts[i];
+    return out;
+  };
+  auto list_index = [&](const YAML::Node& list, size_t i) {
+    size_t index = 0;
+    const std::string& part = parts[i];
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), index);
+    if (error != std::errc() || end != part.data() + part.size()) {
+      throw InputError("--set " + path, 0, path,
+                       fmt::format("'{}' is a list: '{}' is not an entry number", prefix(i), part));
+    }
+    if (index >= list.size()) {
+      throw InputError(
+          "--set " + path, 0, path,
+          fmt::format("no list entry {} in '{}' ({} entries)", index, prefix(i), list.size()));
+    }
+    return index;
+  };
   // yaml-cpp nodes are handles: walk down by reassigning a handle, never by copying values.
   std::vector<YAML::Node> chain{root};
+  size_t created = parts.size();  // parts[0..created) existed before
   for (size_t i = 0; i + 1 < parts.size(); ++i) {
     YAML::Node current = chain.back();
     const std::string& part = parts[i];
-    if (part.empty()) throw InputError("--set " + path, 0, path, "empty key in path");
     if (current.IsSequence()) {
-      const size_t index = std::stoul(part);
-      if (index >= current.size()) {
-        throw InputError("--set " + path, 0, path, fmt::format("no list entry {}", index));
+      chain.push_back(current[list_index(current, i)]);
+    } else if (current.IsMap()) {
+      if (!current[part].IsDefined() || current[part].IsNull()) {
+        current[part] = YAML::Node(YAML::NodeType::Map);
+        created = std::min(created, i + 1);
       }
-      chain.push_back(current[index]);
-    } else {
-      if (!current[part].IsDefined() || current[part].IsNull()) current[part] = YAML::Node();
       chain.push_back(current[part]);
+    } else {
+      throw InputError("--set " + path, 0, path,
+                       fmt::format("'{}' is a single value, it has no key '{}'", prefix(i), part));
     }
   }
   YAML::Node parent = chain.back();
   const std::string& last = parts.back();
   if (parent.IsSequence()) {
-    const size_t index = std::stoul(last);
-    if (index >= parent.size()) {
-      throw InputError("--set " + path, 0, path, fmt::format("no list entry {}", index));
-    }
-    parent[index] = value;
-  } else {
+    parent[list_index(parent, parts.size() - 1)] = value;
+  } else if (parent.IsMap()) {
     parent[last] = value;
+  } else {
+    throw InputError(
+        "--set " + path, 0, path,
+        fmt::format("'{}' is a single value, it has no key '{}'", prefix(parts.size() - 1), last));
   }
-  return path;
+  return prefix(created);
 }
 
 }  // namespace sluice::io

@@ -51,7 +51,7 @@ class MapReader {
   YAML::Node node(const std::string& key);
   std::vector<MapReader> list_of_maps(const std::string& key);
 
-  // Reports the first key that was never asked for.
+  // Reports the first key that was never read, suggesting the closest key asked for.
   void finish() const;
 
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
@@ -67,12 +67,19 @@ class MapReader {
 
  private:
   std::string file_for(const std::string& full_path) const;
+  // The line to report with `file`: none for a value given by --set.
+  static int line_for(const std::string& file, int line);
+  // Line of the key itself (not of its value), or of the mapping when the key is absent.
+  int key_line(const std::string& key) const;
+  // A required key is missing: blames a present, unread key that is a near miss of it.
+  [[noreturn]] void fail_missing(const std::string& key) const;
 
   std::shared_ptr<const YamlSource> source_;
   YAML::Node node_;
   std::string path_;
   int line_;
-  mutable std::set<std::string> used_;
+  mutable std::set<std::string> used_;   // keys read
+  mutable std::set<std::string> asked_;  // keys looked up, present or not (for suggestions)
 };
 
 // 1-based line of a node, 0 when the node has no position (made by --set).
@@ -81,8 +88,12 @@ int line_of(const YAML::Node& node);
 // Closest of `candidates` to `word` by edit distance, or "" when none is close.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
+// Edit distance (Levenshtein) between two words.
+std::size_t edit_distance(const std::string& a, const std::string& b);
+
 // Applies "a.b.c=value" to the tree (creating maps as needed; a number selects a list entry).
-// Returns the dotted path it set. Throws InputError for a malformed override.
+// Returns the dotted path of the outermost node it created or replaced: everything below it
+// came from the command line. Throws InputError for a malformed override.
 std::string apply_override(YAML::Node& root, const std::string& assignment);
 
 }  // namespace sluice::io

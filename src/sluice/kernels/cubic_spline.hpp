@@ -1,6 +1,7 @@
 // Cubic spline kernel (Monaghan 1992), support 2h, in D = 2 or 3 dimensions.
 #pragma once
 
+#include <algorithm>
 #include <numbers>
 
 #include "sluice/core/types.hpp"
@@ -38,6 +39,21 @@ struct CubicSpline {
     if (q <= 1) return norm * (-3 + 2.25 * q) / h2;
     const Real t = 2 - q;
     return -0.75 * norm * t * t / (q * h2);
+  }
+
+  // Single-precision forms without branches (zero beyond the support), for SIMD pair loops:
+  // W = norm (t2^3 / 4 - t1^3) with t2 = max(0, 2 - q), t1 = max(0, 1 - q).
+  float value_branchless(float r) const {
+    const float q = r * static_cast<float>(inverse_h);
+    const float t2 = std::max(0.0f, 2.0f - q), t1 = std::max(0.0f, 1.0f - q);
+    return static_cast<float>(norm) * (0.25f * t2 * t2 * t2 - t1 * t1 * t1);
+  }
+  float gradient_factor_branchless(float r) const {
+    const float q = r * static_cast<float>(inverse_h);
+    const float t2 = std::max(0.0f, 2.0f - q);
+    // A select, not a branch: both sides are computed and the SIMD loop blends them.
+    const float shape = q < 1.0f ? -3.0f + 2.25f * q : -0.75f * t2 * t2 / std::max(q, 1.0f);
+    return static_cast<float>(norm * inverse_h * inverse_h) * shape;
   }
 
   Real h;

@@ -1,6 +1,7 @@
 // Wendland C2 kernel (Wendland 1995), support 2h, in D = 2 or 3 dimensions.
 #pragma once
 
+#include <algorithm>
 #include <numbers>
 
 #include "sluice/core/types.hpp"
@@ -36,6 +37,17 @@ struct WendlandC2 {
     if (q >= 2) return 0;
     const Real t = 1 - 0.5 * q;
     return -5 * norm * t * t * t * inverse_h * inverse_h;
+  }
+
+  // Single-precision forms without branches (zero beyond the support), for SIMD pair loops.
+  float value_branchless(float r) const {
+    const float q = r * static_cast<float>(inverse_h);
+    const float t = std::max(0.0f, 1.0f - 0.5f * q);
+    return static_cast<float>(norm) * t * t * t * t * (2.0f * q + 1.0f);
+  }
+  float gradient_factor_branchless(float r) const {
+    const float t = std::max(0.0f, 1.0f - 0.5f * r * static_cast<float>(inverse_h));
+    return static_cast<float>(-5 * norm * inverse_h * inverse_h) * t * t * t;
   }
 
   Real h;

@@ -1,7 +1,8 @@
-// Cell-linked-list neighbour search. Cells are half the search radius, which cuts the volume
-// scanned per query from 27 r^3 to 15.6 r^3 in 3D. Particles are sorted by cell (x fastest), so
-// the five cells of a row along x are one contiguous index range: a 3D query scans 25 ranges,
-// a 2D query 5, and neighbours sit close in memory.
+// Cell-linked-list neighbour search with cells as wide as the search radius. Particles are
+// sorted by cell (x fastest), so the three cells of a row along x are one contiguous index
+// range: a 3D query scans 9 ranges, a 2D query 3, and neighbours sit close in memory. (Cells
+// of half the radius scan 42 % less volume but cut the ranges into pieces too short for SIMD
+// loops: measured slower, docs/performance.md.)
 #pragma once
 
 #include <algorithm>
@@ -17,7 +18,7 @@ template <int D>
 class CellList {
  public:
   CellList() = default;
-  // Cells of edge radius / 2 cover [lo, hi]; positions outside are clamped to the border
+  // Cells of edge `radius` cover [lo, hi]; positions outside are clamped to the border
   // cells, so a stray particle is still found (the divergence guard reports it).
   CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius);
 
@@ -43,17 +44,27 @@ class CellList {
   template <class Fn>
   void for_each_near(const std::vector<Vec<D>>& positions, const Vec<D>& x, Real radius2,
                      Fn&& fn) const {
+    for_each_candidate_range(x, [&](std::uint32_t begin, std::uint32_t end) {
+      scan(positions, x, radius2, begin, end, fn);
+    });
+  }
+
+  // Calls fn(begin, end) for the contiguous index ranges that hold every particle within
+  // radius() of x (and some farther ones): for loops that test distances themselves, e.g.
+  // branch-free SIMD loops over kernels that vanish beyond their support.
+  template <class Fn>
+  void for_each_candidate_range(const Vec<D>& x, Fn&& fn) const {
     const auto c = cell_coords(x);
     if constexpr (D == 2) {
       for (int dz = -kReach; dz <= kReach; ++dz) {
         const std::size_t row = linear(c[0], c[1] + dz);
-        scan(positions, x, radius2, cell_start_[row - kReach], cell_start_[row + kReach + 1], fn);
+        fn(cell_start_[row - kReach], cell_start_[row + kReach + 1]);
       }
     } else {
       for (int dz = -kReach; dz <= kReach; ++dz) {
         for (int dy = -kReach; dy <= kReach; ++dy) {
           const std::size_t row = linear(c[0], c[1] + dy, c[2] + dz);
-          scan(positions, x, radius2, cell_start_[row - kReach], cell_start_[row + kReach + 1], fn);
+          fn(cell_start_[row - kReach], cell_start_[row + kReach + 1]);
         }
       }
     }
@@ -64,7 +75,8 @@ class CellList {
     std::array<int, D> c{};
     for (int a = 0; a < D; ++a) {
       const Real offset = (x[a] - lo_[a]) * inverse_cell_size_;
-      const int k = (offset < 0 ? 0 : static_cast<int>(std::min<Real>(offset, counts_[a]))) + kReach;
+      const int k =
+          (offset < 0 ? 0 : static_cast<int>(std::min<Real>(offset, counts_[a]))) + kReach;
       c[a] = std::min(k, counts_[a] - 1 - kReach);
     }
     return c;
@@ -96,7 +108,7 @@ class CellList {
   Vec<D> lo_ = Vec<D>::Zero();
   Real cell_size_ = 0;
   Real inverse_cell_size_ = 0;
-  static constexpr int kReach = 2;  // cells scanned on each side of a particle's cell
+  static constexpr int kReach = 1;  // cells scanned on each side of a particle's cell
   std::array<int, D> counts_{};     // including kReach padding cells on each side
   std::vector<std::uint32_t>
       cell_start_;                      // particles of cell c: [cell_start_[c], cell_start_[c+1])

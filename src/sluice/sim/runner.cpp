@@ -27,8 +27,10 @@ double next_multiple(double time, double interval) {
 
 template <int D>
 RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
-  FrameOutput frames(options.out_dir, config.name);
+  // Build (and so validate) everything before creating the output directory: bad input
+  // must leave no directory behind.
   Simulation<D> sim(config);
+  FrameOutput frames(options.out_dir, config.name);
   auto& s = sim.state();
   Probes<D> probes(config.probes, options.out_dir + "/probes.csv",
                    sim.model().interaction_radius());

@@ -65,6 +65,16 @@ TYPED_TEST(KernelTest, GradientFactorMatchesFiniteDifference) {
   EXPECT_EQ(kernel.gradient_factor(1.0), 0.0);
 }
 
+TYPED_TEST(KernelTest, BranchlessFormsMatch) {
+  const typename TypeParam::Kernel kernel(0.5);
+  for (double r = 0; r < 1.2; r += 0.01) {
+    EXPECT_NEAR(kernel.value_branchless(float(r)), kernel.value(r), 2e-6 * kernel.norm) << r;
+    EXPECT_NEAR(kernel.gradient_factor_branchless(float(r)), kernel.gradient_factor(r),
+                2e-5 * kernel.norm / (kernel.h * kernel.h))
+        << r;
+  }
+}
+
 // grad phi_i = sum_j V_j (phi_j - phi_i) grad W_ij for phi = a . x on a regular lattice with
 // the kernel's default h/dx: exact within 1 % at an interior particle.
 TYPED_TEST(KernelTest, GradientOfLinearFieldOnLattice) {

@@ -11,6 +11,7 @@
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/fluid_model.hpp"
+#include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
 #include "sluice/fluid/wcsph/wcsph_parameters.hpp"
 
@@ -41,8 +42,6 @@ class WcsphModel final : public FluidModel<D> {
     half_velocity_ = ps.add_vector_field();
     half_density_ = ps.add_scalar_field();
     wall_velocity_ = ps.add_vector_field();
-    pressure_term_ = ps.add_scalar_field();
-    volume_ = ps.add_scalar_field();
     // The builder set a hydrostatic pressure; the density follows from the equation of state.
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (ps.is_fluid(i)) ps.density[i] = eos_.density(ps.pressure[i]);
@@ -117,33 +116,60 @@ class WcsphModel final : public FluidModel<D> {
         ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? a[i].norm() : 0.0; });
   }
 
+  // Copies what the pair loops read into the packed single-precision arrays.
+  void pack(const SimulationState<D>& s, bool with_rates) {
+    const auto& ps = s.particles;
+    const auto& wall_velocity = ps[wall_velocity_];
+    packed_.resize(ps.size());
+    exec::Default::for_each(ps.size(), [&](std::size_t j) {
+      const bool fluid = ps.is_fluid(j);
+      // 2D models live in the x-z plane: packed as (x, 0, z), like every 3D view of them.
+      const Vec3 x = to_3d<D>(ps.position[j]);
+      const Vec3 v = to_3d<D>(ps.velocity[j]);
+      const Vec3 u = fluid ? v : to_3d<D>(wall_velocity[j]);
+      for (int a = 0; a < 3; ++a) {
+        packed_.position[a][j] = static_cast<float>(x[a]);
+        packed_.velocity[a][j] = static_cast<float>(v[a]);
+        packed_.viscous_velocity[a][j] = static_cast<float>(u[a]);
+      }
+      packed_.density[j] = static_cast<float>(ps.density[j]);
+      packed_.pressure[j] = static_cast<float>(ps.pressure[j]);
+      packed_.fluid[j] = fluid ? 1.0f : 0.0f;
+      packed_.viscous_weight[j] = (fluid || p_.no_slip) ? 1.0f : 0.0f;
+      if (with_rates) {
+        const Real inverse_rho = 1 / ps.density[j];
+        packed_.pressure_term[j] = static_cast<float>(ps.pressure[j] * inverse_rho * inverse_rho);
+        packed_.volume[j] = static_cast<float>(ps.mass[j] * inverse_rho);
+      }
+    });
+    packed_.fluid_before[0] = 0;
+    for (std::size_t j = 0; j < ps.size(); ++j) {
+      packed_.fluid_before[j + 1] = packed_.fluid_before[j] + (ps.is_fluid(j) ? 1 : 0);
+    }
+  }
+
   // Adami, Hu & Adams (2012): wall pressure from the fluid around it, with the hydrostatic
   // correction; wall density from the inverse equation of state; for no-slip, the wall's
   // viscous velocity mirrors the fluid's Shepard-averaged velocity about the wall's own.
   void update_walls(SimulationState<D>& s) {
+    pack(s, false);
     auto& ps = s.particles;
     auto& wall_velocity = ps[wall_velocity_];
-    const Real radius2 = kernel_.support() * kernel_.support();
-    const Vec<D> g = s.gravity;
+    const Vec3 g = to_3d<D>(s.gravity);
     exec::Default::for_each(ps.size(), [&](std::size_t w) {
       if (ps.is_fluid(w)) return;
-      Real sum_w = 0, sum_pw = 0;
-      Vec<D> sum_rho_r_w = Vec<D>::Zero(), sum_v_w = Vec<D>::Zero();
-      s.cells.for_each_neighbor(ps.position, w, radius2,
-                                [&](std::size_t f, const Vec<D>& r_wf, Real r2) {
-                                  if (!ps.is_fluid(f)) return;
-                                  const Real weight = kernel_.value(std::sqrt(r2));
-                                  sum_w += weight;
-                                  sum_pw += ps.pressure[f] * weight;
-                                  sum_rho_r_w += (ps.density[f] * weight) * r_wf;
-                                  sum_v_w += weight * ps.velocity[f];
-                                });
-      if (sum_w > 0) {
+      WallSums sums;
+      s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
+        if (packed_.has_fluid(begin, end)) add_wall_sums(w, begin, end, sums);
+      });
+      if (sums.weight > 0) {
         // Fixed walls do not accelerate; moving bodies will pass their acceleration here.
-        const Real p = (sum_pw + g.dot(sum_rho_r_w)) / sum_w;
+        const Real hydrostatic = g[0] * sums.rho_r[0] + g[1] * sums.rho_r[1] + g[2] * sums.rho_r[2];
+        const Real p = (sums.pressure + hydrostatic) / sums.weight;
         ps.pressure[w] = p;
         ps.density[w] = eos_.density(p);
-        wall_velocity[w] = 2 * ps.velocity[w] - sum_v_w / sum_w;
+        const Vec3 mean(sums.velocity[0], sums.velocity[1], sums.velocity[2]);
+        wall_velocity[w] = 2 * ps.velocity[w] - from_3d<D>(mean / sums.weight);
       } else {
         ps.pressure[w] = 0;
         ps.density[w] = eos_.rho0;
@@ -152,62 +178,142 @@ class WcsphModel final : public FluidModel<D> {
     });
   }
 
+  struct WallSums {
+    double weight = 0, pressure = 0;
+    std::array<double, 3> rho_r{}, velocity{};
+  };
+
+  // Kernel-weighted sums over the fluid particles in [begin, end) around wall particle w.
+  void add_wall_sums(std::size_t w, std::uint32_t begin, std::uint32_t end, WallSums& out) const {
+    const float* __restrict px = packed_.position[0].data();
+    const float* __restrict py = packed_.position[1].data();
+    const float* __restrict pz = packed_.position[2].data();
+    const float* __restrict vx = packed_.velocity[0].data();
+    const float* __restrict vy = packed_.velocity[1].data();
+    const float* __restrict vz = packed_.velocity[2].data();
+    const float* __restrict rho = packed_.density.data();
+    const float* __restrict pressure = packed_.pressure.data();
+    const float* __restrict fluid = packed_.fluid.data();
+    const float xw = px[w], yw = py[w], zw = pz[w];
+    float sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0;
+#pragma omp simd reduction(+ : sw, sp, srx, sry, srz, svx, svy, svz)
+    for (std::size_t f = begin; f < end; ++f) {
+      const float rx = xw - px[f], ry = yw - py[f], rz = zw - pz[f];
+      const float weight =
+          fluid[f] * kernel_.value_branchless(std::sqrt(rx * rx + ry * ry + rz * rz));
+      const float rho_weight = rho[f] * weight;
+      sw += weight;
+      sp += pressure[f] * weight;
+      srx += rho_weight * rx;
+      sry += rho_weight * ry;
+      srz += rho_weight * rz;
+      svx += weight * vx[f];
+      svy += weight * vy[f];
+      svz += weight * vz[f];
+    }
+    out.weight += sw;
+    out.pressure += sp;
+    out.rho_r[0] += srx;
+    out.rho_r[1] += sry;
+    out.rho_r[2] += srz;
+    out.velocity[0] += svx;
+    out.velocity[1] += svy;
+    out.velocity[2] += svz;
+  }
+
   // Continuity with density diffusion and the momentum equation, gathered per fluid particle
   // (each pair evaluated from both sides, so no two threads write the same particle).
-  // Per-particle factors are computed first so the pair loop has a single division.
   void compute_rates(SimulationState<D>& s) {
+    pack(s, true);
     auto& ps = s.particles;
-    auto& pressure_term = ps[pressure_term_];
-    auto& volume = ps[volume_];
-    exec::Default::for_each(ps.size(), [&](std::size_t j) {
-      const Real inverse_rho = 1 / ps.density[j];
-      pressure_term[j] = ps.pressure[j] * inverse_rho * inverse_rho;
-      volume[j] = ps.mass[j] * inverse_rho;
-    });
     auto& acceleration = ps[acceleration_];
     auto& density_rate = ps[density_rate_];
-    const auto& wall_velocity = ps[wall_velocity_];
     const Real h = kernel_.h;
-    const Real radius2 = kernel_.support() * kernel_.support();
-    const Real eta2 = 0.01 * h * h;
     const Real c0 = eos_.c0;
-    const Real two_alpha_c0_h = 2 * p_.artificial_viscosity * c0 * h;
+    PairConstants k;
+    k.eta2 = static_cast<float>(0.01 * h * h);
+    k.two_alpha_c0_h = static_cast<float>(2 * p_.artificial_viscosity * c0 * h);
     // Molteni & Colagrossi (2009) diffusion, with the hydrostatic part of the density
     // difference removed (Fourtakas et al. 2019), linearised: rho_H_ji = rho0 g.r_ji / c0^2.
-    const Real diffusion = -2 * p_.density_diffusion * h * c0;
-    const Vec<D> hydrostatic = -(eos_.rho0 / (c0 * c0)) * s.gravity;  // rho_H_ji = this . r_ij
+    k.diffusion = static_cast<float>(-2 * p_.density_diffusion * h * c0);
+    const Vec3 g = to_3d<D>(s.gravity);
+    for (int a = 0; a < 3; ++a)
+      k.hydrostatic[a] = static_cast<float>(-(eos_.rho0 / (c0 * c0)) * g[a]);
     const Real two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
-    const bool no_slip = p_.no_slip;
-    const Vec<D> g = s.gravity;
     exec::Default::for_each(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;
-      const Vec<D> v_i = ps.velocity[i];
-      const Real rho_i = ps.density[i];
-      const Real laminar_i = two_nu_rho0 / rho_i;
-      const Real pressure_term_i = pressure_term[i];
-      Vec<D> acc = Vec<D>::Zero();
-      Real drho = 0;
-      s.cells.for_each_neighbor(ps.position, i, radius2, [&](std::size_t j, const Vec<D>& r_ij, Real r2) {
-        const Real f = kernel_.gradient_factor(std::sqrt(r2));
-        const Real v_j = volume[j];
-        const Real rho_j = ps.density[j];
-        const bool fluid_j = ps.is_fluid(j);
-        const Vec<D> v_ij = v_i - ps.velocity[j];
-        drho += rho_j * v_j * f * v_ij.dot(r_ij);  // m_j v_ij . grad W
-        Real coefficient = pressure_term_i + pressure_term[j];
-        if (fluid_j) drho += diffusion * (rho_j - rho_i - hydrostatic.dot(r_ij)) * f * v_j;
-        if (fluid_j || no_slip) {
-          const Vec<D> v_visc = fluid_j ? v_ij : Vec<D>(v_i - wall_velocity[j]);
-          const Real vr = v_visc.dot(r_ij);
-          const Real inverse_r2 = 1 / (r2 + eta2);
-          if (vr < 0) coefficient -= two_alpha_c0_h * vr * inverse_r2 / (rho_i + rho_j);
-          acc += (v_j * laminar_i * r2 * f * inverse_r2) * v_visc;
-        }
-        acc -= (rho_j * v_j * coefficient * f) * r_ij;
+      const float laminar_i = static_cast<float>(two_nu_rho0 / ps.density[i]);
+      Rates rates;
+      s.cells.for_each_candidate_range(ps.position[i], [&](std::uint32_t begin, std::uint32_t end) {
+        add_rates(i, begin, end, k, laminar_i, rates);
       });
-      acceleration[i] = acc + g;
-      density_rate[i] = drho;
+      const Vec3 acc(rates.acceleration[0], rates.acceleration[1], rates.acceleration[2]);
+      acceleration[i] = from_3d<D>(acc + g);
+      density_rate[i] = rates.density;
     });
+  }
+
+  struct PairConstants {
+    float eta2 = 0, two_alpha_c0_h = 0, diffusion = 0;
+    std::array<float, 3> hydrostatic{};  // rho_H_ji = hydrostatic . r_ij
+  };
+  struct Rates {
+    std::array<double, 3> acceleration{};
+    double density = 0;
+  };
+
+  // The pair terms of fluid particle i with the candidates [begin, end), without branches:
+  // the kernel vanishes beyond its support, and i itself adds exactly zero (every term
+  // carries r_ij or rho_j - rho_i), so the loop runs as SIMD over the whole range.
+  void add_rates(std::size_t i, std::uint32_t begin, std::uint32_t end, const PairConstants& k,
+                 float laminar_i, Rates& out) const {
+    const float* __restrict px = packed_.position[0].data();
+    const float* __restrict py = packed_.position[1].data();
+    const float* __restrict pz = packed_.position[2].data();
+    const float* __restrict vx = packed_.velocity[0].data();
+    const float* __restrict vy = packed_.velocity[1].data();
+    const float* __restrict vz = packed_.velocity[2].data();
+    const float* __restrict wx = packed_.viscous_velocity[0].data();
+    const float* __restrict wy = packed_.viscous_velocity[1].data();
+    const float* __restrict wz = packed_.viscous_velocity[2].data();
+    const float* __restrict rho = packed_.density.data();
+    const float* __restrict pressure_term = packed_.pressure_term.data();
+    const float* __restrict volume = packed_.volume.data();
+    const float* __restrict fluid = packed_.fluid.data();
+    const float* __restrict viscous = packed_.viscous_weight.data();
+    const float xi = px[i], yi = py[i], zi = pz[i];
+    const float vxi = vx[i], vyi = vy[i], vzi = vz[i];
+    const float rho_i = rho[i], pressure_term_i = pressure_term[i];
+    const float hx = k.hydrostatic[0], hy = k.hydrostatic[1], hz = k.hydrostatic[2];
+    float ax = 0, ay = 0, az = 0, drho = 0;
+#pragma omp simd reduction(+ : ax, ay, az, drho)
+    for (std::size_t j = begin; j < end; ++j) {
+      const float rx = xi - px[j], ry = yi - py[j], rz = zi - pz[j];
+      const float r2 = rx * rx + ry * ry + rz * rz;
+      const float v_dot_r = (vxi - vx[j]) * rx + (vyi - vy[j]) * ry + (vzi - vz[j]) * rz;
+      const float ux = vxi - wx[j], uy = vyi - wy[j], uz = vzi - wz[j];  // viscous v_ij
+      const float u_dot_r = ux * rx + uy * ry + uz * rz;
+      const float f = kernel_.gradient_factor_branchless(std::sqrt(r2));
+      const float volume_j = volume[j];
+      const float rho_j = rho[j];
+      const float inverse_r2 = 1.0f / (r2 + k.eta2);
+      const float hydro = hx * rx + hy * ry + hz * rz;
+      drho += rho_j * volume_j * f * v_dot_r  // m_j v_ij . grad W
+              + fluid[j] * k.diffusion * (rho_j - rho_i - hydro) * f * volume_j;
+      // Monaghan's Pi_ij, acting only while the particles approach.
+      const float artificial =
+          -k.two_alpha_c0_h * std::min(u_dot_r, 0.0f) * inverse_r2 / (rho_i + rho_j);
+      const float push =
+          rho_j * volume_j * (pressure_term_i + pressure_term[j] + viscous[j] * artificial) * f;
+      const float laminar = viscous[j] * volume_j * laminar_i * r2 * f * inverse_r2;
+      ax += laminar * ux - push * rx;
+      ay += laminar * uy - push * ry;
+      az += laminar * uz - push * rz;
+    }
+    out.acceleration[0] += ax;
+    out.acceleration[1] += ay;
+    out.acceleration[2] += az;
+    out.density += drho;
   }
 
   WcsphParameters p_;
@@ -215,7 +321,7 @@ class WcsphModel final : public FluidModel<D> {
   TaitEquation eos_;
   FieldHandle<Vec<D>> acceleration_, half_velocity_, wall_velocity_;
   FieldHandle<Real> density_rate_, half_density_;
-  FieldHandle<Real> pressure_term_, volume_;  // p / rho^2 and m / rho, refreshed every step
+  PackedParticles packed_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
 };
