@@ -14,6 +14,10 @@ struct Serial {
   static void for_each(std::size_t n, Body&& body) {
     for (std::size_t i = 0; i < n; ++i) body(i);
   }
+  template <class Body>
+  static void for_each_balanced(std::size_t n, Body&& body) {
+    for_each(n, body);
+  }
   template <class Value>
   static double max_of(std::size_t n, Value&& value) {
     double result = -std::numeric_limits<double>::infinity();
@@ -30,6 +34,15 @@ struct OpenMP {
   static void for_each(std::size_t n, Body&& body) {
     const long count = static_cast<long>(n);
 #pragma omp parallel for schedule(static)
+    for (long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+  }
+  // For loops whose cost varies a lot along the index (pair loops: boundary particles far
+  // from the fluid cost nothing): threads take chunks of 256 indices as they finish. Each
+  // index is still computed by one thread alone, so results do not depend on the schedule.
+  template <class Body>
+  static void for_each_balanced(std::size_t n, Body&& body) {
+    const long count = static_cast<long>(n);
+#pragma omp parallel for schedule(dynamic, 256)
     for (long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
   }
   template <class Value>

@@ -26,6 +26,29 @@ struct PackedParticles {
   std::vector<float> viscous_weight;        // 1 where viscosity acts on the pair partner, else 0
   std::vector<std::uint32_t> fluid_before;  // fluid particles among indices [0, k); size n + 1
 
+  // Raw pointers for the SIMD loops (they only read, so aliasing does not matter).
+  struct View {
+    const float *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz;
+    const float *density, *pressure, *pressure_term, *volume, *fluid, *viscous_weight;
+  };
+  View view() const {
+    return {position[0].data(),
+            position[1].data(),
+            position[2].data(),
+            velocity[0].data(),
+            velocity[1].data(),
+            velocity[2].data(),
+            viscous_velocity[0].data(),
+            viscous_velocity[1].data(),
+            viscous_velocity[2].data(),
+            density.data(),
+            pressure.data(),
+            pressure_term.data(),
+            volume.data(),
+            fluid.data(),
+            viscous_weight.data()};
+  }
+
   bool has_fluid(std::uint32_t begin, std::uint32_t end) const {
     return fluid_before[end] != fluid_before[begin];
   }

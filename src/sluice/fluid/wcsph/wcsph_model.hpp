@@ -156,7 +156,7 @@ class WcsphModel final : public FluidModel<D> {
     auto& ps = s.particles;
     auto& wall_velocity = ps[wall_velocity_];
     const Vec3 g = to_3d<D>(s.gravity);
-    exec::Default::for_each(ps.size(), [&](std::size_t w) {
+    exec::Default::for_each_balanced(ps.size(), [&](std::size_t w) {
       if (ps.is_fluid(w)) return;
       WallSums sums;
       s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
@@ -185,31 +185,23 @@ class WcsphModel final : public FluidModel<D> {
 
   // Kernel-weighted sums over the fluid particles in [begin, end) around wall particle w.
   void add_wall_sums(std::size_t w, std::uint32_t begin, std::uint32_t end, WallSums& out) const {
-    const float* __restrict px = packed_.position[0].data();
-    const float* __restrict py = packed_.position[1].data();
-    const float* __restrict pz = packed_.position[2].data();
-    const float* __restrict vx = packed_.velocity[0].data();
-    const float* __restrict vy = packed_.velocity[1].data();
-    const float* __restrict vz = packed_.velocity[2].data();
-    const float* __restrict rho = packed_.density.data();
-    const float* __restrict pressure = packed_.pressure.data();
-    const float* __restrict fluid = packed_.fluid.data();
-    const float xw = px[w], yw = py[w], zw = pz[w];
+    const auto p = packed_.view();
+    const float xw = p.x[w], yw = p.y[w], zw = p.z[w];
     float sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0;
 #pragma omp simd reduction(+ : sw, sp, srx, sry, srz, svx, svy, svz)
     for (std::size_t f = begin; f < end; ++f) {
-      const float rx = xw - px[f], ry = yw - py[f], rz = zw - pz[f];
+      const float rx = xw - p.x[f], ry = yw - p.y[f], rz = zw - p.z[f];
       const float weight =
-          fluid[f] * kernel_.value_branchless(std::sqrt(rx * rx + ry * ry + rz * rz));
-      const float rho_weight = rho[f] * weight;
+          p.fluid[f] * kernel_.value_branchless(std::sqrt(rx * rx + ry * ry + rz * rz));
+      const float rho_weight = p.density[f] * weight;
       sw += weight;
-      sp += pressure[f] * weight;
+      sp += p.pressure[f] * weight;
       srx += rho_weight * rx;
       sry += rho_weight * ry;
       srz += rho_weight * rz;
-      svx += weight * vx[f];
-      svy += weight * vy[f];
-      svz += weight * vz[f];
+      svx += weight * p.vx[f];
+      svy += weight * p.vy[f];
+      svz += weight * p.vz[f];
     }
     out.weight += sw;
     out.pressure += sp;
@@ -240,7 +232,7 @@ class WcsphModel final : public FluidModel<D> {
     for (int a = 0; a < 3; ++a)
       k.hydrostatic[a] = static_cast<float>(-(eos_.rho0 / (c0 * c0)) * g[a]);
     const Real two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
+    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;
       const float laminar_i = static_cast<float>(two_nu_rho0 / ps.density[i]);
       Rates rates;
@@ -267,45 +259,33 @@ class WcsphModel final : public FluidModel<D> {
   // carries r_ij or rho_j - rho_i), so the loop runs as SIMD over the whole range.
   void add_rates(std::size_t i, std::uint32_t begin, std::uint32_t end, const PairConstants& k,
                  float laminar_i, Rates& out) const {
-    const float* __restrict px = packed_.position[0].data();
-    const float* __restrict py = packed_.position[1].data();
-    const float* __restrict pz = packed_.position[2].data();
-    const float* __restrict vx = packed_.velocity[0].data();
-    const float* __restrict vy = packed_.velocity[1].data();
-    const float* __restrict vz = packed_.velocity[2].data();
-    const float* __restrict wx = packed_.viscous_velocity[0].data();
-    const float* __restrict wy = packed_.viscous_velocity[1].data();
-    const float* __restrict wz = packed_.viscous_velocity[2].data();
-    const float* __restrict rho = packed_.density.data();
-    const float* __restrict pressure_term = packed_.pressure_term.data();
-    const float* __restrict volume = packed_.volume.data();
-    const float* __restrict fluid = packed_.fluid.data();
-    const float* __restrict viscous = packed_.viscous_weight.data();
-    const float xi = px[i], yi = py[i], zi = pz[i];
-    const float vxi = vx[i], vyi = vy[i], vzi = vz[i];
-    const float rho_i = rho[i], pressure_term_i = pressure_term[i];
+    const auto p = packed_.view();
+    const float xi = p.x[i], yi = p.y[i], zi = p.z[i];
+    const float vxi = p.vx[i], vyi = p.vy[i], vzi = p.vz[i];
+    const float rho_i = p.density[i], pressure_term_i = p.pressure_term[i];
     const float hx = k.hydrostatic[0], hy = k.hydrostatic[1], hz = k.hydrostatic[2];
     float ax = 0, ay = 0, az = 0, drho = 0;
 #pragma omp simd reduction(+ : ax, ay, az, drho)
     for (std::size_t j = begin; j < end; ++j) {
-      const float rx = xi - px[j], ry = yi - py[j], rz = zi - pz[j];
+      const float rx = xi - p.x[j], ry = yi - p.y[j], rz = zi - p.z[j];
       const float r2 = rx * rx + ry * ry + rz * rz;
-      const float v_dot_r = (vxi - vx[j]) * rx + (vyi - vy[j]) * ry + (vzi - vz[j]) * rz;
-      const float ux = vxi - wx[j], uy = vyi - wy[j], uz = vzi - wz[j];  // viscous v_ij
+      const float v_dot_r = (vxi - p.vx[j]) * rx + (vyi - p.vy[j]) * ry + (vzi - p.vz[j]) * rz;
+      const float ux = vxi - p.wx[j], uy = vyi - p.wy[j], uz = vzi - p.wz[j];  // viscous v_ij
       const float u_dot_r = ux * rx + uy * ry + uz * rz;
       const float f = kernel_.gradient_factor_branchless(std::sqrt(r2));
-      const float volume_j = volume[j];
-      const float rho_j = rho[j];
+      const float volume_j = p.volume[j];
+      const float rho_j = p.density[j];
       const float inverse_r2 = 1.0f / (r2 + k.eta2);
       const float hydro = hx * rx + hy * ry + hz * rz;
       drho += rho_j * volume_j * f * v_dot_r  // m_j v_ij . grad W
-              + fluid[j] * k.diffusion * (rho_j - rho_i - hydro) * f * volume_j;
+              + p.fluid[j] * k.diffusion * (rho_j - rho_i - hydro) * f * volume_j;
       // Monaghan's Pi_ij, acting only while the particles approach.
       const float artificial =
           -k.two_alpha_c0_h * std::min(u_dot_r, 0.0f) * inverse_r2 / (rho_i + rho_j);
-      const float push =
-          rho_j * volume_j * (pressure_term_i + pressure_term[j] + viscous[j] * artificial) * f;
-      const float laminar = viscous[j] * volume_j * laminar_i * r2 * f * inverse_r2;
+      const float push = rho_j * volume_j *
+                         (pressure_term_i + p.pressure_term[j] + p.viscous_weight[j] * artificial) *
+                         f;
+      const float laminar = p.viscous_weight[j] * volume_j * laminar_i * r2 * f * inverse_r2;
       ax += laminar * ux - push * rx;
       ay += laminar * uy - push * ry;
       az += laminar * uz - push * rz;

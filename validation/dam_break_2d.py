@@ -1,0 +1,77 @@
+#!/usr/bin/python3
+"""F2 of VALIDATION.md: runs cases/dam_break_2d.yaml at the CI spacing and finer, and plots the
+surge front against Koshizuka & Oka (1996). Writes docs/img/f2_dam_break_front.png and prints
+the RMS difference over t in [0, 0.70] s for each spacing.
+
+usage: /usr/bin/python3 validation/dam_break_2d.py [SPACING ...]   (default: 0.025 0.0125)
+"""
+import math
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from probes_csv import read_probe
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SLUICE = os.path.join(ROOT, "build", "release", "sluice")
+REFERENCE = os.path.join(ROOT, "validation", "data", "dam_break_front_koshizuka_oka_1996.tsv")
+
+
+def read_reference():
+    rows = []
+    with open(REFERENCE) as f:
+        for line in f:
+            parts = line.split()
+            try:
+                rows.append((float(parts[0]), float(parts[1])))
+            except (ValueError, IndexError):
+                continue
+    return rows
+
+
+def run(spacing):
+    out = os.path.join(ROOT, "out", "validation", f"dam_break_2d_{spacing}")
+    subprocess.run([SLUICE, "run", os.path.join(ROOT, "cases", "dam_break_2d.yaml"), "--out", out,
+                    "--end", "0.75", "--set", f"spacing={spacing}"], check=True,
+                   stdout=subprocess.DEVNULL)
+    return read_probe(os.path.join(out, "probes.csv"), "front")
+
+
+def interpolate(times, values, t):
+    for k in range(1, len(times)):
+        if times[k] >= t:
+            w = (t - times[k - 1]) / (times[k] - times[k - 1])
+            return values[k - 1] + w * (values[k] - values[k - 1])
+    return values[-1]
+
+
+def main():
+    spacings = [float(s) for s in sys.argv[1:]] or [0.025, 0.0125]
+    reference = read_reference()
+    plt.figure(figsize=(6.4, 4.4))
+    plt.plot([t for t, _ in reference], [x for _, x in reference], "ko",
+             label="experiment (Koshizuka & Oka 1996)")
+    for spacing in spacings:
+        times, fronts = run(spacing)
+        errors = [interpolate(times, fronts, t) - x for t, x in reference if t <= 0.70]
+        rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+        print(f"spacing {spacing} m: front RMS error {rms:.3f} m over {len(errors)} points")
+        plt.plot(times, fronts, "-", label=f"sluice wcsph, dx = {spacing} m (RMS {rms:.2f} m)")
+    plt.axvline(0.70, color="0.7", lw=0.8)
+    plt.xlabel("time [s]")
+    plt.ylabel("surge front x [m]")
+    plt.title("F2: 2D dam break, column 1 m x 2 m")
+    plt.legend(loc="upper left", fontsize=8)
+    plt.grid(alpha=0.3)
+    plt.tight_layout()
+    path = os.path.join(ROOT, "docs", "img", "f2_dam_break_front.png")
+    plt.savefig(path, dpi=120)
+    print(f"wrote {path}")
+
+
+if __name__ == "__main__":
+    main()

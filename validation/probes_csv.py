@@ -1,0 +1,15 @@
+"""Reading sluice's OUT/probes.csv: time and one probe's column, chosen by name."""
+import csv
+
+
+def read_probe(path, name):
+    """Returns (times, values) of the column whose header starts with the probe's name."""
+    times, values = [], []
+    with open(path) as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        column = next(i for i, title in enumerate(header) if title.startswith(name + " "))
+        for row in reader:
+            times.append(float(row[0]))
+            values.append(float(row[column]))
+    return times, values
