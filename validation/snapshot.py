@@ -1,0 +1,56 @@
+#!/usr/bin/python3
+"""Side views (x-z) of a sluice series at chosen times, fluid coloured by speed: a quick look
+at a run without ParaView. Writes one PNG with a panel per time.
+
+usage: /usr/bin/python3 validation/snapshot.py SERIES.pvd OUT.png TIME [TIME ...]
+"""
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def read_frame(path):
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    points = vtk_to_numpy(data.GetPoints().GetData())
+    speed = np.linalg.norm(vtk_to_numpy(data.GetPointData().GetArray("velocity")), axis=1)
+    kind = vtk_to_numpy(data.GetPointData().GetArray("kind"))
+    return points, speed, kind
+
+
+def main():
+    pvd, out, times = sys.argv[1], sys.argv[2], [float(t) for t in sys.argv[3:]]
+    frames = [(float(d.get("timestep")), d.get("file"))
+              for d in ET.parse(pvd).getroot().iter("DataSet")]
+    base = os.path.dirname(os.path.abspath(pvd))
+    fig, axes = plt.subplots(len(times), 1, figsize=(7, 2.3 * len(times)), squeeze=False)
+    for ax, wanted in zip(axes[:, 0], times):
+        time, file = min(frames, key=lambda frame: abs(frame[0] - wanted))
+        points, speed, kind = read_frame(os.path.join(base, file))
+        walls = kind != 0
+        ax.scatter(points[walls, 0], points[walls, 2], s=0.3, c="0.75", lw=0)
+        order = np.argsort(points[~walls, 1])  # draw the far side first
+        shown = ax.scatter(points[~walls, 0][order], points[~walls, 2][order], s=0.8,
+                           c=speed[~walls][order], cmap="viridis", vmin=0, lw=0)
+        ax.set_aspect("equal")
+        ax.set_title(f"t = {time:.2f} s", fontsize=9)
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("z [m]")
+        fig.colorbar(shown, ax=ax, label="speed [m/s]", fraction=0.03)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
