@@ -27,9 +27,15 @@ TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
   io::ProbeConfig bottom;
   bottom.kind = io::ProbeKind::kPressure;
   bottom.point = Vec3(0.5, 0, 0);
-  Probes<2> probe({bottom}, "", sim.model().interaction_radius());
-  const double p_bottom = probe.measure(s)[0];
+  io::ProbeConfig level;
+  level.kind = io::ProbeKind::kWaterHeight;
+  level.point = Vec3(0.5, 0, 0);
+  Probes<2> probe({bottom, level}, "", sim.model().interaction_radius());
+  const auto measured = probe.measure(s);
+  const double p_bottom = measured[0];
   EXPECT_NEAR(p_bottom, rho0 * g * depth, 0.03 * rho0 * g * depth);
+  // The gauge finds the free surface within a particle spacing.
+  EXPECT_NEAR(measured[1], depth, config.spacing);
 
   // Profile: L2 of the particle pressures against rho g (H - z), relative to rho g H.
   double error2 = 0, scale2 = 0;
