@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "sluice/contact/hertz_mindlin.hpp"
 #include "sluice/rigid/rigid_integrator.hpp"
@@ -71,6 +72,9 @@ TEST(HertzMindlin, ElasticImpactMatchesHertzTheory) {
   const double t_c = 2.868 * std::pow(mass * mass / (radius * e_star * e_star * v0), 0.2);
   const double delta_max = std::pow(15 * mass * v0 * v0 / (16 * e_star * std::sqrt(radius)), 0.4);
   const Impact impact = drop_sphere(steel, mass, radius, v0);
+  std::printf(
+      "C2 Hertz impact: contact time %.4g s (theory %.4g), peak overlap %.4g m (theory %.4g)\n",
+      impact.contact_time, t_c, impact.peak_overlap, delta_max);
   EXPECT_NEAR(impact.contact_time, t_c, 0.05 * t_c);
   EXPECT_NEAR(impact.peak_overlap, delta_max, 0.05 * delta_max);
   EXPECT_NEAR(impact.rebound_speed, v0, 1e-3 * v0);
@@ -83,6 +87,8 @@ TEST_P(Restitution, ReboundOverImpactSpeedIsE) {
   const ContactMaterial material{1e8, 0.3, e, 0.0};
   for (double v0 : {0.5, 2.0}) {  // Hertz damping of this form makes e independent of speed
     const Impact impact = drop_sphere(material, 0.5, 0.05, v0);
+    std::printf("C1 law: e = %.2f, v0 = %.1f m/s: rebound ratio %.5f\n", e, v0,
+                impact.rebound_speed / v0);
     EXPECT_NEAR(impact.rebound_speed / v0, e, 0.03 * e) << "v0 = " << v0;
   }
 }
