@@ -33,12 +33,6 @@ class StageTimers {
 
   const std::vector<Entry>& entries() const { return entries_; }
 
-  double total() const {
-    double sum = 0;
-    for (const auto& e : entries_) sum += e.seconds;
-    return sum;
-  }
-
  private:
   std::vector<Entry> entries_;
 };

@@ -1,5 +1,7 @@
 // Execution policies: the one place where loops are handed to threads. A loop body is written
-// once as a function of the index and run by a policy; no copy of a loop per backend.
+// once as a function of the index and run by a policy; no copy of a loop per backend. One
+// OpenMP thread is the serial reference (tests/physics/test_determinism.cpp); a GPU policy
+// would be another struct with the same members.
 #pragma once
 
 #include <algorithm>
@@ -7,24 +9,6 @@
 #include <limits>
 
 namespace sluice::exec {
-
-// Runs on the calling thread; used by tests and as the reference for determinism.
-struct Serial {
-  template <class Body>
-  static void for_each(std::size_t n, Body&& body) {
-    for (std::size_t i = 0; i < n; ++i) body(i);
-  }
-  template <class Body>
-  static void for_each_balanced(std::size_t n, Body&& body) {
-    for_each(n, body);
-  }
-  template <class Value>
-  static double max_of(std::size_t n, Value&& value) {
-    double result = -std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < n; ++i) result = std::max(result, value(i));
-    return result;
-  }
-};
 
 // OpenMP threads with a static schedule, so each thread gets a contiguous block of the
 // cell-sorted particles. Only maxima and minima are reduced here: they do not depend on the

@@ -27,7 +27,6 @@ class CellList {
   void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order);
 
   Real radius() const { return kReach * cell_size_; }
-  std::size_t cell_count() const { return cell_start_.empty() ? 0 : cell_start_.size() - 1; }
 
   // Calls fn(j, r_ij, r2) for every particle j != i with |r_i - r_j|^2 < radius2
   // (r_ij = r_i - r_j). radius2 must not exceed radius()^2.

@@ -62,12 +62,6 @@ class ParticleSet {
   // Applies a permutation to every field: after it, particle k is the one that was order[k].
   void reorder(const std::vector<std::uint32_t>& order);
 
-  // Bytes held per particle by all fields (for the memory report).
-  std::size_t bytes_per_particle() const {
-    return 2 * sizeof(Vec<D>) + 3 * sizeof(Real) + sizeof(ParticleKind) +
-           scalar_fields_.size() * sizeof(Real) + vector_fields_.size() * sizeof(Vec<D>);
-  }
-
  private:
   std::vector<std::vector<Real>> scalar_fields_;
   std::vector<std::vector<Vec<D>>> vector_fields_;
