@@ -27,13 +27,13 @@ struct BodySample {  // in the body's own frame (see each function for where its
 
 // The analytic shapes give surface particles spaced about dx on each face, placed on the surface,
 // plus `interior_layers` layers at depths dx, 2 dx, ... inside, each sampled like the surface
-// (normals and areas zero). A layer that would be thinner than dx/2 across (a box thinner than
-// 2 k dx + dx/2, a sphere or cylinder radius below k dx + dx/4) collapses onto the shape's
-// mid-plane, axis or centre, so its depth lies within [k dx - dx/2, k dx + dx/4]; layers that
-// no longer fit inside the shape are left out. dimension 2: the shape's section in the x-z plane
-// (every point has y = 0, areas are lengths per unit depth); dimension 3: full surfaces.
-// All throw std::invalid_argument when a size or dx is not positive and finite,
-// interior_layers < 0, or dimension is not 2 or 3.
+// (normals and areas zero). Layer k of a shape of thickness T (box side, 2 x radius, cylinder
+// length) has thickness e = T - 2 k dx: when |e| < dx/2 it collapses onto the shape's mid-plane
+// (axis, centre), so its depth lies within k dx +- dx/4; when e <= -dx/2 it is left out (the
+// previous layer's sides are then at most 1.5 dx apart), and so are the layers after it. dimension
+// 2: the shape's section in the x-z plane (every point has y = 0, areas are lengths per unit
+// depth); dimension 3: full surfaces. All throw std::invalid_argument when a size or dx is not
+// positive and finite, interior_layers < 0, or dimension is not 2 or 3.
 
 // Box centred at the origin with edge lengths `size` (2D: the rectangle size.x by size.z;
 // size.y is ignored). A face of sides a, b gets n_a = max(1, round(a/dx)) by n_b particles at
@@ -60,7 +60,8 @@ BodySample sample_cylinder_body(double radius, double length, double dx, int int
 // it), every cell clipped to the face; a clipped piece smaller than a quarter cell is merged into
 // its largest neighbour. One particle per piece, at its centroid, with its area and the face
 // normal. A face smaller than dx gets one particle, so triangles much smaller than dx on a curved
-// mesh give particles closer than dx. A box-shaped mesh is sampled exactly as sample_box_body.
+// mesh give particles closer than dx. The surface particles of a box-shaped mesh are exactly
+// those of sample_box_body (the interiors differ: lattice here, shells there).
 // Interior: the points of a lattice of spacing dx anchored at the mesh's bounding-box minimum
 // that are inside the mesh (winding number) at distance d from the surface with
 // dx/2 <= d < interior_layers dx + dx/2; layer = round(d/dx).
