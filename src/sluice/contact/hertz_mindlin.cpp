@@ -73,35 +73,48 @@ ContactPair make_contact_pair(const ContactMaterial& a, double mass_a, double ra
   return p;
 }
 
-ContactForce hertz_mindlin_force(const ContactPair& pair, double overlap, const Vec3& normal,
-                                 const Vec3& relative_velocity, Vec3& tangential, double dt) {
-  ContactForce out;
-  const double v_n = relative_velocity.dot(normal);  // < 0 while approaching
+double hertz_normal_force(const ContactPair& pair, double overlap, double normal_velocity) {
   const double spring = pair.normal_stiffness * overlap * std::sqrt(overlap);
-  const double damper = -pair.normal_damping * std::sqrt(std::sqrt(overlap)) * v_n;
-  out.normal = std::max(0.0, spring + damper);  // a penalty contact only pushes
-  out.elastic_energy = 0.4 * pair.normal_stiffness * overlap * overlap * std::sqrt(overlap);
+  const double damper = -pair.normal_damping * std::sqrt(std::sqrt(overlap)) * normal_velocity;
+  return std::max(0.0, spring + damper);  // a penalty contact only pushes
+}
 
+Vec3 mindlin_tangential_force(const ContactPair& pair, double overlap, const Vec3& normal,
+                              const Vec3& tangential_velocity, double normal_force,
+                              Vec3& tangential, double dt, double& elastic_energy, bool& sliding) {
   // Tangential displacement: keep its length, turn it into the current tangent plane.
   const double length = tangential.norm();
   tangential -= tangential.dot(normal) * normal;
   const double projected = tangential.norm();
   if (projected > 0) tangential *= length / projected;
-  const Vec3 v_t = relative_velocity - v_n * normal;
-  tangential += dt * v_t;
+  tangential += dt * tangential_velocity;
 
-  const double stiffness_t = 8 * pair.effective_shear * std::sqrt(pair.effective_radius * overlap);
-  Vec3 f_t = -stiffness_t * tangential -
-             pair.tangential_damping_ratio * std::sqrt(stiffness_t * pair.effective_mass) * v_t;
-  const double limit = pair.friction * out.normal;
-  if (f_t.norm() > limit) {
-    out.sliding = true;
-    const double norm = f_t.norm();
-    f_t = norm > 0 ? Vec3(f_t * (limit / norm)) : Vec3::Zero();
+  const double stiffness = 8 * pair.effective_shear * std::sqrt(pair.effective_radius * overlap);
+  Vec3 force = -stiffness * tangential - pair.tangential_damping_ratio *
+                                             std::sqrt(stiffness * pair.effective_mass) *
+                                             tangential_velocity;
+  const double limit = pair.friction * normal_force;
+  sliding = false;
+  if (force.norm() > limit) {
+    sliding = true;
+    const double norm = force.norm();
+    force = norm > 0 ? Vec3(force * (limit / norm)) : Vec3::Zero();
     // The spring alone carries the Coulomb force from here on.
-    tangential = stiffness_t > 0 ? Vec3(-f_t / stiffness_t) : Vec3::Zero();
+    tangential = stiffness > 0 ? Vec3(-force / stiffness) : Vec3::Zero();
   }
-  out.elastic_energy += 0.5 * stiffness_t * tangential.squaredNorm();
+  elastic_energy += 0.5 * stiffness * tangential.squaredNorm();
+  return force;
+}
+
+ContactForce hertz_mindlin_force(const ContactPair& pair, double overlap, const Vec3& normal,
+                                 const Vec3& relative_velocity, Vec3& tangential, double dt) {
+  ContactForce out;
+  const double v_n = relative_velocity.dot(normal);
+  out.normal = hertz_normal_force(pair, overlap, v_n);
+  out.elastic_energy = 0.4 * pair.normal_stiffness * overlap * overlap * std::sqrt(overlap);
+  const Vec3 f_t =
+      mindlin_tangential_force(pair, overlap, normal, relative_velocity - v_n * normal, out.normal,
+                               tangential, dt, out.elastic_energy, out.sliding);
   out.force = out.normal * normal + f_t;
   return out;
 }

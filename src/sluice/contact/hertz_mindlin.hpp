@@ -45,6 +45,17 @@ struct ContactForce {
   bool sliding = false;
 };
 
+// The normal force |F_n| >= 0 for overlap delta > 0 and normal relative velocity v_n (< 0 while
+// approaching): Hertz spring plus the dashpot, clamped at zero.
+double hertz_normal_force(const ContactPair& pair, double overlap, double normal_velocity);
+
+// The tangential force for a contact carrying `normal_force`, with the tangential relative
+// velocity v_t; updates the accumulated displacement `tangential` (see below). Adds the spring's
+// energy to `elastic_energy` and sets `sliding`.
+Vec3 mindlin_tangential_force(const ContactPair& pair, double overlap, const Vec3& normal,
+                              const Vec3& tangential_velocity, double normal_force,
+                              Vec3& tangential, double dt, double& elastic_energy, bool& sliding);
+
 // Force on body 1 from body 2 for overlap delta > 0 along `normal` (unit, pointing from body 2
 // into body 1), with the relative velocity v1 - v2 at the contact point. `tangential` is the
 // accumulated tangential displacement of this contact: turned into the current tangent plane,

@@ -1,0 +1,260 @@
+#include "sluice/contact/multibody_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "sluice/rigid/rigid_integrator.hpp"
+
+namespace sluice {
+
+namespace {
+
+constexpr int kDirections = 6;  // contacts of one body pair are told apart by +-x, +-y, +-z
+
+int direction_of(const Vec3& n) {
+  int axis = 0;
+  n.cwiseAbs().maxCoeff(&axis);
+  return 2 * axis + (n[axis] < 0 ? 1 : 0);
+}
+
+struct Box {
+  Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 max = -Vec3::Constant(std::numeric_limits<double>::infinity());
+  void grow(const Vec3& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  bool contains(const Vec3& p, double margin) const {
+    return (p.array() >= min.array() - margin).all() && (p.array() <= max.array() + margin).all();
+  }
+  bool overlaps(const Box& o, double margin) const {
+    return (min.array() - margin <= o.max.array()).all() &&
+           (o.min.array() - margin <= max.array()).all();
+  }
+};
+
+}  // namespace
+
+MultibodySystem::MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction)
+    : contact_distance_(contact_distance), gravity_(gravity), substep_fraction_(substep_fraction) {}
+
+std::size_t MultibodySystem::add(ContactBody body) {
+  bodies_.push_back(std::move(body));
+  contact_force_.assign(bodies_.size(), Vec3::Zero());
+  contact_torque_.assign(bodies_.size(), Vec3::Zero());
+  return bodies_.size() - 1;
+}
+
+Vec3 MultibodySystem::world_point(const ContactBody& body, std::size_t k) const {
+  return body.state.position + body.state.orientation * body.surface_position[k];
+}
+
+const ContactPair& MultibodySystem::pair(std::size_t a, std::size_t b) {
+  const std::uint64_t key = a * bodies_.size() + b;
+  auto found = pairs_.find(key);
+  if (found != pairs_.end()) return found->second;
+  const ContactBody& A = bodies_[a];
+  const ContactBody& B = bodies_[b];
+  return pairs_
+      .emplace(key, make_contact_pair(A.material, A.fixed ? 0 : A.state.mass, A.contact_radius,
+                                      B.material, B.fixed ? 0 : B.state.mass, B.contact_radius))
+      .first->second;
+}
+
+std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() const {
+  const std::size_t n = bodies_.size();
+  std::vector<std::vector<Vec3>> points(n), normals(n);
+  std::vector<Box> boxes(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const ContactBody& body = bodies_[b];
+    for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
+      points[b].push_back(world_point(body, k));
+      normals[b].push_back(body.state.orientation * body.surface_normal[k]);
+      boxes[b].grow(points[b].back());
+    }
+  }
+  const double reach2 = contact_distance_ * contact_distance_;
+  std::vector<Contact> contacts;
+  std::map<std::uint64_t, std::size_t> index;  // (a, b, direction) -> contact
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      if (bodies_[a].fixed && bodies_[b].fixed) continue;
+      if (!boxes[a].overlaps(boxes[b], contact_distance_)) continue;
+      std::vector<std::size_t> near_b;
+      for (std::size_t l = 0; l < points[b].size(); ++l) {
+        if (boxes[a].contains(points[b][l], contact_distance_)) near_b.push_back(l);
+      }
+      for (std::size_t k = 0; k < points[a].size(); ++k) {
+        if (!boxes[b].contains(points[a][k], contact_distance_)) continue;
+        for (std::size_t l : near_b) {
+          const Vec3 d = points[b][l] - points[a][k];
+          if (d.squaredNorm() >= reach2) continue;
+          const Vec3& n_k = normals[a][k];
+          const Vec3& n_l = normals[b][l];
+          if (n_k.dot(n_l) > -0.3) continue;  // the faces do not face each other
+          const Vec3 n_c = (n_k - n_l).normalized();
+          const double overlap = -d.dot(n_c);  // minus the gap between the faces
+          if (overlap <= 0) continue;
+          const std::uint64_t key = (a * n + b) * kDirections + direction_of(n_c);
+          auto [slot, fresh] = index.emplace(key, contacts.size());
+          if (fresh) {
+            contacts.emplace_back();
+            contacts.back().a = a;
+            contacts.back().b = b;
+          }
+          Contact& c = contacts[slot->second];
+          const double w = overlap * std::sqrt(overlap) *
+                           std::min(bodies_[a].surface_area[k], bodies_[b].surface_area[l]);
+          const Vec3 midpoint = 0.5 * (points[a][k] + points[b][l]);
+          c.overlap = std::max(c.overlap, overlap);
+          c.weight += w;
+          c.point += w * midpoint;
+          c.normal += w * n_c;
+          c.pairs.push_back({midpoint, w});
+        }
+      }
+    }
+  }
+  for (Contact& c : contacts) {
+    c.point /= c.weight;
+    c.normal.normalize();
+  }
+  return contacts;
+}
+
+void MultibodySystem::apply_contacts(double dt) {
+  std::fill(contact_force_.begin(), contact_force_.end(), Vec3::Zero());
+  std::fill(contact_torque_.begin(), contact_torque_.end(), Vec3::Zero());
+  elastic_energy_ = 0;
+  deepest_overlap_ = 0;
+  std::map<std::uint64_t, Vec3> still_touching;
+  const std::size_t n = bodies_.size();
+  for (const Contact& c : find_contacts()) {
+    const ContactBody& A = bodies_[c.a];
+    const ContactBody& B = bodies_[c.b];
+    const ContactPair& law = pair(c.a, c.b);
+    auto add = [&](const Vec3& force, const Vec3& point) {
+      contact_force_[c.b] += force;
+      contact_torque_[c.b] += (point - B.state.position).cross(force);
+      contact_force_[c.a] -= force;
+      contact_torque_[c.a] -= (point - A.state.position).cross(force);
+    };
+    // Normal: the bodies' Hertz law at the deepest overlap, shared among the particle pairs,
+    // each share damped with the normal velocity at its own point.
+    double normal_force = 0;
+    for (const ParticlePair& p : c.pairs) {
+      const double v_n =
+          (B.state.velocity_at(p.point) - A.state.velocity_at(p.point)).dot(c.normal);
+      const double share = p.weight / c.weight * hertz_normal_force(law, c.overlap, v_n);
+      add(share * c.normal, p.point);
+      normal_force += share;
+    }
+    // Tangential: one Mindlin spring per contact, at the weighted contact point.
+    const std::uint64_t key = (c.a * n + c.b) * kDirections + direction_of(c.normal);
+    Vec3 tangential = Vec3::Zero();
+    if (auto found = tangential_.find(key); found != tangential_.end()) tangential = found->second;
+    const Vec3 relative = B.state.velocity_at(c.point) - A.state.velocity_at(c.point);
+    const Vec3 v_t = relative - relative.dot(c.normal) * c.normal;
+    double elastic = 0.4 * law.normal_stiffness * c.overlap * c.overlap * std::sqrt(c.overlap);
+    bool sliding = false;
+    add(mindlin_tangential_force(law, c.overlap, c.normal, v_t, normal_force, tangential, dt,
+                                 elastic, sliding),
+        c.point);
+    still_touching[key] = tangential;
+    elastic_energy_ += elastic;
+    deepest_overlap_ = std::max(deepest_overlap_, c.overlap);
+  }
+  tangential_.swap(still_touching);  // a contact that ended forgets its history
+}
+
+double MultibodySystem::solid_step(double dt) {
+  const std::size_t n = bodies_.size();
+  std::vector<Box> boxes(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    for (std::size_t k = 0; k < bodies_[b].surface_position.size(); ++k) {
+      boxes[b].grow(world_point(bodies_[b], k));
+    }
+  }
+  double step = dt;
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      const ContactBody& A = bodies_[a];
+      const ContactBody& B = bodies_[b];
+      if (A.fixed && B.fixed) continue;
+      // In reach within this step: bounding boxes closer than the way the bodies can travel.
+      const double approach =
+          (B.state.velocity - A.state.velocity).norm() +
+          (A.state.angular_velocity().norm() + B.state.angular_velocity().norm()) *
+              (boxes[a].max - boxes[a].min).norm();
+      if (!boxes[a].overlaps(boxes[b], approach * dt + contact_distance_)) continue;
+      const ContactPair& p = pair(a, b);
+      // The stiffest the contact gets: Hertz's peak overlap for this approach speed, or the
+      // overlap that carries the body's weight, whichever is deeper.
+      const double v = std::max(approach, 1e-3);
+      const double impact = std::pow(
+          15 * p.effective_mass * v * v / (16 * p.effective_young * std::sqrt(p.effective_radius)),
+          0.4);
+      const double weight =
+          std::pow(p.effective_mass * gravity_.norm() / p.normal_stiffness, 2.0 / 3.0);
+      const double overlap = std::max({impact, weight, deepest_overlap_});
+      const double stiffness = 1.5 * p.normal_stiffness * std::sqrt(overlap);
+      const double period = std::numbers::pi * std::sqrt(p.effective_mass / stiffness);
+      step = std::min(step, substep_fraction_ * period);
+    }
+  }
+  return step;
+}
+
+int MultibodySystem::advance(double dt, const std::vector<Vec3>& force,
+                             const std::vector<Vec3>& torque) {
+  const int substeps = static_cast<int>(std::ceil(dt / solid_step(dt) - 1e-9));
+  const double h = dt / substeps;
+  const std::size_t n = bodies_.size();
+  if (substeps_ == 0) apply_contacts(0);
+  auto total_force = [&](std::size_t b) {
+    Vec3 f = bodies_[b].state.mass * gravity_ + contact_force_[b];
+    if (b < force.size()) f += force[b];
+    return f;
+  };
+  auto total_torque = [&](std::size_t b) {
+    Vec3 t = contact_torque_[b];
+    if (b < torque.size()) t += torque[b];
+    return t;
+  };
+  for (int s = 0; s < substeps; ++s) {
+    for (std::size_t b = 0; b < n; ++b) {
+      if (bodies_[b].fixed) continue;
+      kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
+      drift(bodies_[b].state, h);
+    }
+    // The dashpots see the velocities predicted to the end of the sub-step (with the forces
+    // of the last evaluation), not the half-step ones, which would lag by h/2.
+    std::vector<RigidBody> half(n);
+    for (std::size_t b = 0; b < n; ++b) {
+      half[b] = bodies_[b].state;
+      if (!bodies_[b].fixed) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
+    }
+    apply_contacts(h);
+    for (std::size_t b = 0; b < n; ++b) bodies_[b].state = half[b];
+    for (std::size_t b = 0; b < n; ++b) {
+      if (!bodies_[b].fixed) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
+    }
+    ++substeps_;
+  }
+  return substeps;
+}
+
+MultibodyEnergy MultibodySystem::energy() const {
+  MultibodyEnergy e;
+  for (const ContactBody& body : bodies_) {
+    if (body.fixed) continue;
+    e.kinetic += body.state.kinetic_energy();
+    e.potential -= body.state.mass * gravity_.dot(body.state.position);
+  }
+  e.elastic = elastic_energy_;
+  return e;
+}
+
+}  // namespace sluice

@@ -1,0 +1,95 @@
+// Rigid bodies in contact (seed 000: Amaro Junior, Cheng & Osello 2019). Each body carries
+// surface particles with the outward normal and area of the face they sample. For two bodies
+// within reach, every pair of surface particles (k, l) closer than the contact distance gives
+// a contact normal from the faces, n_c = (n_k - n_l) / |n_k - n_l|, and the gap between the
+// faces along it, (r_l - r_k) . n_c, rather than the bumpy particle-to-particle direction.
+// The overlapping pairs of one body pair and one contact direction form one contact: its
+// overlap is the deepest pair's and its normal the overlap-weighted mean, so the force follows
+// the Hertz-Mindlin law of the bodies whatever the number of particle pairs. The force is
+// shared among the pairs in proportion to overlap^(3/2) times area, each share with the dashpot
+// of its own normal velocity: a tilt shifts the force to the deeper side and rocking is damped.
+// Solid sub-cycling: a step of the caller (the fluid's) is split into as many solid sub-steps
+// as the stiffest contact in reach needs; with no contact in reach it is one step.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sluice/contact/hertz_mindlin.hpp"
+#include "sluice/rigid/rigid_body.hpp"
+
+namespace sluice {
+
+struct ContactBody {
+  RigidBody state;
+  ContactMaterial material;
+  double contact_radius = 0;  // R in Hertz's law; 0 = flat (a wall)
+  bool fixed = false;         // walls and fixed bodies: infinite mass, never move
+  // Surface particles in the principal frame, relative to the centre of mass.
+  std::vector<Vec3> surface_position;
+  std::vector<Vec3> surface_normal;
+  std::vector<double> surface_area;
+};
+
+struct MultibodyEnergy {
+  double kinetic = 0;
+  double potential = 0;  // in the gravity field, relative to z = 0 along -g
+  double elastic = 0;    // stored in the contact springs
+  double total() const { return kinetic + potential + elastic; }
+};
+
+class MultibodySystem {
+ public:
+  // contact_distance: particle pairs closer than this are examined (about the spacing).
+  // substep_fraction: solid step = this fraction of the shortest contact period (1/20-1/50).
+  MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction = 1.0 / 30);
+
+  std::size_t add(ContactBody body);
+
+  // Advances by dt. `force` and `torque` (one per body, may be empty) are held over the
+  // sub-steps, as the fluid's force is. Returns the number of sub-steps taken.
+  int advance(double dt, const std::vector<Vec3>& force = {}, const std::vector<Vec3>& torque = {});
+
+  const std::vector<ContactBody>& bodies() const { return bodies_; }
+  std::vector<ContactBody>& bodies() { return bodies_; }
+  MultibodyEnergy energy() const;
+  // Contact force and torque (about the centre of mass) on each body from the last sub-step.
+  const std::vector<Vec3>& contact_force() const { return contact_force_; }
+  const std::vector<Vec3>& contact_torque() const { return contact_torque_; }
+  // The deepest overlap between any two bodies at the last sub-step (for soundness checks).
+  double deepest_overlap() const { return deepest_overlap_; }
+  long substeps_taken() const { return substeps_; }
+
+ private:
+  struct ParticlePair {
+    Vec3 point;     // midway between the two surface particles
+    double weight;  // overlap^(3/2) times the smaller area
+  };
+  struct Contact {
+    std::size_t a = 0, b = 0;  // the normal points from a into b
+    double overlap = 0, weight = 0;
+    Vec3 point = Vec3::Zero(), normal = Vec3::Zero();
+    std::vector<ParticlePair> pairs;
+  };
+
+  std::vector<Contact> find_contacts() const;
+  void apply_contacts(double dt);
+  double solid_step(double dt);
+  const ContactPair& pair(std::size_t a, std::size_t b);
+  Vec3 world_point(const ContactBody& body, std::size_t k) const;
+
+  double contact_distance_;
+  Vec3 gravity_;
+  double substep_fraction_;
+  std::vector<ContactBody> bodies_;
+  std::vector<Vec3> contact_force_, contact_torque_;
+  std::map<std::uint64_t, Vec3> tangential_;  // accumulated tangential displacement per contact
+  std::map<std::uint64_t, ContactPair> pairs_;
+  double elastic_energy_ = 0;
+  double deepest_overlap_ = 0;
+  long substeps_ = 0;
+};
+
+}  // namespace sluice
