@@ -38,6 +38,7 @@ ContactBody sphere(double radius, const ContactMaterial& m) {
   ContactBody body = from_sample(sample_sphere_body(radius, kSpacing, 0, 3),
                                  sphere_mass_properties(radius, 1000.0), m);
   body.contact_radius = radius;
+  body.flat_faces = false;
   return body;
 }
 

@@ -86,6 +86,7 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() const {
       for (std::size_t l = 0; l < points[b].size(); ++l) {
         if (boxes[a].contains(points[b][l], contact_distance_)) near_b.push_back(l);
       }
+      const Vec3 centres = (bodies_[b].state.position - bodies_[a].state.position).normalized();
       for (std::size_t k = 0; k < points[a].size(); ++k) {
         if (!boxes[b].contains(points[a][k], contact_distance_)) continue;
         for (std::size_t l : near_b) {
@@ -94,7 +95,14 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() const {
           const Vec3& n_k = normals[a][k];
           const Vec3& n_l = normals[b][l];
           if (n_k.dot(n_l) > -0.3) continue;  // the faces do not face each other
-          const Vec3 n_c = (n_k - n_l).normalized();
+          // From a into b. Between flat faces, the mean of the two face normals (seed 000);
+          // against one flat face, that face's normal, so its plane gives the gap whatever the
+          // lateral offset of the pair; between two curved bodies, the line of centres.
+          const bool flat_a = bodies_[a].flat_faces, flat_b = bodies_[b].flat_faces;
+          const Vec3 n_c = flat_a && flat_b ? Vec3((n_k - n_l).normalized())
+                           : flat_b         ? Vec3(-n_l)
+                           : flat_a         ? n_k
+                                            : centres;
           const double overlap = -d.dot(n_c);  // minus the gap between the faces
           if (overlap <= 0) continue;
           const std::uint64_t key = (a * n + b) * kDirections + direction_of(n_c);
@@ -135,11 +143,17 @@ void MultibodySystem::apply_contacts(double dt) {
     const ContactBody& A = bodies_[c.a];
     const ContactBody& B = bodies_[c.b];
     const ContactPair& law = pair(c.a, c.b);
+    // On a curved body the force acts on the line through its centre along the normal (a
+    // sphere's contact force passes through its centre); on a flat face, where it is applied.
+    auto lever = [&](const ContactBody& body, const Vec3& point) -> Vec3 {
+      const Vec3 arm = point - body.state.position;
+      return body.flat_faces ? arm : Vec3(arm.dot(c.normal) * c.normal);
+    };
     auto add = [&](const Vec3& force, const Vec3& point) {
       contact_force_[c.b] += force;
-      contact_torque_[c.b] += (point - B.state.position).cross(force);
+      contact_torque_[c.b] += lever(B, point).cross(force);
       contact_force_[c.a] -= force;
-      contact_torque_[c.a] -= (point - A.state.position).cross(force);
+      contact_torque_[c.a] -= lever(A, point).cross(force);
     };
     // Normal: the bodies' Hertz law at the deepest overlap, shared among the particle pairs,
     // each share damped with the normal velocity at its own point.

@@ -27,6 +27,7 @@ struct ContactBody {
   ContactMaterial material;
   double contact_radius = 0;  // R in Hertz's law; 0 = flat (a wall)
   bool fixed = false;         // walls and fixed bodies: infinite mass, never move
+  bool flat_faces = true;     // every surface particle lies on a plane face (boxes, meshes, walls)
   // Surface particles in the principal frame, relative to the centre of mass.
   std::vector<Vec3> surface_position;
   std::vector<Vec3> surface_normal;
