@@ -5,27 +5,10 @@
 #include <cstdio>
 #include <numbers>
 
-#include "sluice/contact/multibody_system.hpp"
-#include "sluice/geometry/body_sampling.hpp"
-#include "sluice/rigid/mass_properties.hpp"
+#include "contact_support.hpp"
 
 namespace sluice {
 namespace {
-
-ContactBody make_body(const BodySample& sample, const MassProperties& mass,
-                      const ContactMaterial& m, double contact_radius) {
-  ContactBody body;
-  body.material = m;
-  body.state.mass = mass.mass;
-  body.state.principal_inertia = mass.inertia.diagonal();
-  body.contact_radius = contact_radius;
-  for (std::size_t k = 0; k < sample.surface_count(); ++k) {
-    body.surface_position.push_back(sample.position[k] - mass.center_of_mass);
-    body.surface_normal.push_back(sample.normal[k]);
-    body.surface_area.push_back(sample.area[k]);
-  }
-  return body;
-}
 
 // C7: squares 0.2 m (2D, x-z plane) of 1.5, 3.0 and 1.2 kg at +1, -0.5 and 0 m/s along x,
 // E = 15 MPa, nu = 0.3, elastic. Rigid-body sequence: 1 and 2 collide, then 2 and 3.
@@ -35,10 +18,10 @@ TEST(ThreeBodyCollision2D, MomentumAndFinalVelocities) {
   MultibodySystem system(dx, Vec3::Zero());
   const double masses[3] = {1.5, 3.0, 1.2}, speeds[3] = {1.0, -0.5, 0.0}, x0[3] = {0.0, 0.3, 0.6};
   for (int b = 0; b < 3; ++b) {
-    ContactBody body =
-        make_body(sample_box_body(Vec3(side, side, side), dx, 0, 2),
-                  with_mass(box_mass_properties(Vec3(side, 1.0, side), 1.0), masses[b]), material,
-                  0.5 * side);
+    ContactBody body = testing::body_from_sample(
+        sample_box_body(Vec3(side, side, side), dx, 0, 2),
+        with_mass(box_mass_properties(Vec3(side, 1.0, side), 1.0), masses[b]), material,
+        0.5 * side);
     body.state.position = Vec3(x0[b], 0, 0);
     body.state.velocity = Vec3(speeds[b], 0, 0);
     body.state.locked_translation = {false, true, false};
@@ -69,22 +52,6 @@ TEST(ThreeBodyCollision2D, MomentumAndFinalVelocities) {
   }
 }
 
-// The floor z = 0 as a fixed body: a square of surface particles facing up.
-ContactBody floor_patch(double half, double dx, const ContactMaterial& m) {
-  ContactBody floor;
-  floor.fixed = true;
-  floor.material = m;
-  const int n = static_cast<int>(std::lround(2 * half / dx));
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      floor.surface_position.push_back(Vec3(-half + (i + 0.5) * dx, -half + (j + 0.5) * dx, 0));
-      floor.surface_normal.push_back(Vec3::UnitZ());
-      floor.surface_area.push_back(dx * dx);
-    }
-  }
-  return floor;
-}
-
 // C6: a bouncing ball with sub-cycling against the same run at the solid step throughout:
 // the same trajectory within 1 %, at a third of the solid steps or fewer.
 TEST(SubCycling, SameTrajectoryForFarFewerSolidSteps) {
@@ -92,9 +59,8 @@ TEST(SubCycling, SameTrajectoryForFarFewerSolidSteps) {
   const double dx = 0.01, radius = 0.1;
   auto make = [&] {
     MultibodySystem system(dx, Vec3(0, 0, -9.81));
-    system.add(floor_patch(0.2, dx, material));
-    ContactBody ball = make_body(sample_sphere_body(radius, dx, 0, 3),
-                                 sphere_mass_properties(radius, 1000), material, radius);
+    system.add(testing::floor_patch(0.2, dx, material));
+    ContactBody ball = testing::sphere_body(radius, dx, material);
     ball.state.position = Vec3(0, 0, radius + 0.1);
     system.add(ball);
     return system;

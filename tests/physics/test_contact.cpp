@@ -5,58 +5,26 @@
 #include <cstdio>
 #include <numbers>
 
-#include "sluice/contact/multibody_system.hpp"
-#include "sluice/geometry/body_sampling.hpp"
-#include "sluice/rigid/mass_properties.hpp"
+#include "contact_support.hpp"
 
 namespace sluice {
 namespace {
 
 constexpr double kSpacing = 0.01;
 
-ContactBody from_sample(const BodySample& sample, const MassProperties& mass,
-                        const ContactMaterial& m) {
-  ContactBody body;
-  body.material = m;
-  body.state.mass = mass.mass;
-  body.state.principal_inertia = mass.inertia.diagonal();  // boxes and spheres: already principal
-  body.contact_radius = std::cbrt(3 * mass.mass / (4 * std::numbers::pi * 1000.0));
-  for (std::size_t k = 0; k < sample.surface_count(); ++k) {
-    body.surface_position.push_back(sample.position[k] - mass.center_of_mass);
-    body.surface_normal.push_back(sample.normal[k]);
-    body.surface_area.push_back(sample.area[k]);
-  }
-  return body;
-}
-
 ContactBody cube(double side, const ContactMaterial& m) {
-  return from_sample(sample_box_body(Vec3::Constant(side), kSpacing, 0, 3),
-                     box_mass_properties(Vec3::Constant(side), 1000.0), m);
+  // Hertz radius of a cube: the radius of the sphere of the same volume.
+  return testing::body_from_sample(sample_box_body(Vec3::Constant(side), kSpacing, 0, 3),
+                                   box_mass_properties(Vec3::Constant(side), 1000.0), m,
+                                   std::cbrt(3 / (4 * std::numbers::pi)) * side);
 }
 
 ContactBody sphere(double radius, const ContactMaterial& m) {
-  ContactBody body = from_sample(sample_sphere_body(radius, kSpacing, 0, 3),
-                                 sphere_mass_properties(radius, 1000.0), m);
-  body.contact_radius = radius;
-  body.flat_faces = false;
-  return body;
+  return testing::sphere_body(radius, kSpacing, m);
 }
 
-// The floor z = 0 as a fixed body: a square of surface particles facing up.
 ContactBody floor_body(double half_width, const ContactMaterial& m) {
-  ContactBody floor;
-  floor.fixed = true;
-  floor.material = m;
-  const int n = static_cast<int>(std::lround(2 * half_width / kSpacing));
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      floor.surface_position.push_back(
-          Vec3(-half_width + (i + 0.5) * kSpacing, -half_width + (j + 0.5) * kSpacing, 0));
-      floor.surface_normal.push_back(Vec3::UnitZ());
-      floor.surface_area.push_back(kSpacing * kSpacing);
-    }
-  }
-  return floor;
+  return testing::floor_patch(half_width, kSpacing, m);
 }
 
 // Drops a body so that it hits the floor at speed v0; returns rebound / impact normal speed,
