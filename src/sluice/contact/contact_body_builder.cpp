@@ -1,5 +1,6 @@
 #include "sluice/contact/contact_body_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sluice {
@@ -35,6 +36,33 @@ ContactBody make_floor_patch(double half_width, double dx, const ContactMaterial
     }
   }
   return floor;
+}
+
+std::vector<ContactBody> make_tank_walls(const Vec3& inside_min, const Vec3& inside_max,
+                                         const std::vector<std::string>& open_sides, double dx,
+                                         const ContactMaterial& material) {
+  // The tank's inner surface is the surface of its inner box, with the normals turned inward.
+  const Vec3 size = inside_max - inside_min;
+  const Vec3 centre = 0.5 * (inside_min + inside_max);
+  const BodySample box = sample_box_body(size, dx, 0, 3);
+  std::vector<ContactBody> walls;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int sign : {-1, 1}) {
+      const std::string side = std::string(1, "xyz"[axis]) + (sign > 0 ? "+" : "-");
+      if (std::find(open_sides.begin(), open_sides.end(), side) != open_sides.end()) continue;
+      ContactBody wall;
+      wall.fixed = true;
+      wall.material = material;
+      for (std::size_t k = 0; k < box.surface_count(); ++k) {
+        if (box.normal[k][axis] * sign < 0.5) continue;  // another side's particle
+        wall.surface_position.push_back(centre + box.position[k]);
+        wall.surface_normal.push_back(-box.normal[k]);
+        wall.surface_area.push_back(box.area[k]);
+      }
+      walls.push_back(std::move(wall));
+    }
+  }
+  return walls;
 }
 
 }  // namespace sluice

@@ -2,6 +2,9 @@
 // mass properties, and a fixed square patch of floor.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "sluice/contact/multibody_system.hpp"
 #include "sluice/geometry/body_sampling.hpp"
 #include "sluice/rigid/mass_properties.hpp"
@@ -16,5 +19,13 @@ ContactBody make_contact_body(const BodySample& sample, const MassProperties& ma
 
 // The plane z = 0 over [-half_width, half_width]^2 as a fixed body facing up (+z).
 ContactBody make_floor_patch(double half_width, double dx, const ContactMaterial& material);
+
+// The closed sides of a tank (`inside` is its inner box; `open_sides` among "x-", "x+", "y-",
+// "y+", "z-", "z+") as fixed bodies, one per side, their surface particles on the inner faces
+// facing into the tank. One body per side keeps each side's bounding box flat, so a body is "in
+// reach" of a side only when it is near that side. 3D only.
+std::vector<ContactBody> make_tank_walls(const Vec3& inside_min, const Vec3& inside_max,
+                                         const std::vector<std::string>& open_sides, double dx,
+                                         const ContactMaterial& material);
 
 }  // namespace sluice
