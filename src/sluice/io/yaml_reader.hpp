@@ -63,7 +63,6 @@ class MapReader {
   int line() const { return line_; }
   const std::string& path() const { return path_; }
   const YamlSource& source() const { return *source_; }
-  std::shared_ptr<const YamlSource> source_ptr() const { return source_; }
 
  private:
   std::string file_for(const std::string& full_path) const;

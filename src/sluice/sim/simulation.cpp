@@ -36,13 +36,6 @@ void Simulation<D>::step(double until) {
   ++state_.step;
 }
 
-template <int D>
-std::vector<std::string> Simulation<D>::stage_names() const {
-  std::vector<std::string> names;
-  for (const auto& stage : stages_) names.push_back(stage->name());
-  return names;
-}
-
 template class Simulation<2>;
 template class Simulation<3>;
 

@@ -28,7 +28,6 @@ class Simulation {
   StageTimers& timers() { return timers_; }
   const io::CaseConfig& config() const { return config_; }
   double next_time_step() const { return model_->next_time_step(state_); }
-  std::vector<std::string> stage_names() const;
 
  private:
   io::CaseConfig config_;
