@@ -20,6 +20,11 @@ void print_summary(const sluice::RunSummary& r) {
       "({} particles, {} threads), {} frames in {}\n",
       r.simulated_time, r.steps, r.wall_seconds, r.particle_steps_per_second() / 1e6, r.particles,
       r.threads, r.frames, r.series_path);
+  if (r.bodies > 0) {
+    fmt::print("  {} bodies: {} solid sub-steps ({:.3g} per step, at most {} in a step)\n",
+               r.bodies, r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
+               r.most_substeps_per_step);
+  }
   double total = 0;
   for (const auto& e : r.stages) total += e.seconds;
   for (const auto& e : r.stages) {
@@ -67,10 +72,10 @@ int main(int argc, char** argv) {
     if (check->parsed()) {
       const auto c = sluice::check_case(config);
       fmt::print(
-          "{}: {}D case '{}' is valid\n  particles: {} ({} fluid, {} wall)\n  first time step: "
-          "{:.4g} s\n  {}\n",
+          "{}: {}D case '{}' is valid\n  particles: {} ({} fluid, {} wall)\n  bodies: {} ({} "
+          "particles)\n  first time step: {:.4g} s\n  {}\n",
           case_path, config.dimension, config.name, c.particles, c.fluid_particles,
-          c.wall_particles, c.first_time_step, c.model);
+          c.wall_particles, c.bodies, c.body_particles, c.first_time_step, c.model);
       return sluice::kExitOk;
     }
     sluice::RunOptions options;

@@ -12,8 +12,11 @@ inline ContactBody body_from_sample(const BodySample& sample, const MassProperti
 
 // A curved body: a sphere of density 1000 kg/m^3.
 inline ContactBody sphere_body(double radius, double dx, const ContactMaterial& material) {
-  return make_contact_body(sample_sphere_body(radius, dx, 0, 3),
-                           sphere_mass_properties(radius, 1000.0), material, radius, false);
+  ContactBody sphere =
+      make_contact_body(sample_sphere_body(radius, dx, 0, 3),
+                        sphere_mass_properties(radius, 1000.0), material, radius, false);
+  sphere.spherical = true;
+  return sphere;
 }
 
 inline ContactBody floor_patch(double half_width, double dx, const ContactMaterial& material) {

@@ -40,11 +40,11 @@ ContactBody make_floor_patch(double half_width, double dx, const ContactMaterial
 
 std::vector<ContactBody> make_tank_walls(const Vec3& inside_min, const Vec3& inside_max,
                                          const std::vector<std::string>& open_sides, double dx,
-                                         const ContactMaterial& material) {
+                                         const ContactMaterial& material, int dimension) {
   // The tank's inner surface is the surface of its inner box, with the normals turned inward.
   const Vec3 size = inside_max - inside_min;
   const Vec3 centre = 0.5 * (inside_min + inside_max);
-  const BodySample box = sample_box_body(size, dx, 0, 3);
+  const BodySample box = sample_box_body(size, dx, 0, dimension);
   std::vector<ContactBody> walls;
   for (int axis = 0; axis < 3; ++axis) {
     for (int sign : {-1, 1}) {
@@ -59,10 +59,25 @@ std::vector<ContactBody> make_tank_walls(const Vec3& inside_min, const Vec3& ins
         wall.surface_normal.push_back(-box.normal[k]);
         wall.surface_area.push_back(box.area[k]);
       }
-      walls.push_back(std::move(wall));
+      if (!wall.surface_position.empty()) walls.push_back(std::move(wall));
     }
   }
   return walls;
+}
+
+ContactBody make_fixed_box(const Vec3& box_min, const Vec3& box_max, double dx,
+                           const ContactMaterial& material, int dimension) {
+  const BodySample box = sample_box_body(box_max - box_min, dx, 0, dimension);
+  ContactBody body;
+  body.fixed = true;
+  body.material = material;
+  const Vec3 centre = 0.5 * (box_min + box_max);
+  for (std::size_t k = 0; k < box.surface_count(); ++k) {
+    body.surface_position.push_back(centre + box.position[k]);
+    body.surface_normal.push_back(box.normal[k]);
+    body.surface_area.push_back(box.area[k]);
+  }
+  return body;
 }
 
 }  // namespace sluice

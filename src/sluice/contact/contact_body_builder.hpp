@@ -23,9 +23,13 @@ ContactBody make_floor_patch(double half_width, double dx, const ContactMaterial
 // The closed sides of a tank (`inside` is its inner box; `open_sides` among "x-", "x+", "y-",
 // "y+", "z-", "z+") as fixed bodies, one per side, their surface particles on the inner faces
 // facing into the tank. One body per side keeps each side's bounding box flat, so a body is "in
-// reach" of a side only when it is near that side. 3D only.
+// reach" of a side only when it is near that side. dimension 2: the x-z section (no y sides).
 std::vector<ContactBody> make_tank_walls(const Vec3& inside_min, const Vec3& inside_max,
                                          const std::vector<std::string>& open_sides, double dx,
-                                         const ContactMaterial& material);
+                                         const ContactMaterial& material, int dimension = 3);
+
+// A solid box [box_min, box_max] as one fixed body, its surface particles facing out.
+ContactBody make_fixed_box(const Vec3& box_min, const Vec3& box_max, double dx,
+                           const ContactMaterial& material, int dimension);
 
 }  // namespace sluice

@@ -103,7 +103,19 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() const {
                            : flat_b         ? Vec3(-n_l)
                            : flat_a         ? n_k
                                             : centres;
-          const double overlap = -d.dot(n_c);  // minus the gap between the faces
+          double overlap = -d.dot(n_c);  // minus the gap between the faces
+          // A sphere's surface is known exactly: against another sphere or a flat face, the
+          // overlap follows from its centre rather than from the nearest sampled points.
+          const ContactBody& A = bodies_[a];
+          const ContactBody& B = bodies_[b];
+          if (A.spherical && B.spherical) {
+            overlap =
+                A.contact_radius + B.contact_radius - (B.state.position - A.state.position).norm();
+          } else if (A.spherical && flat_b) {
+            overlap = A.contact_radius - (A.state.position - points[b][l]).dot(n_l);
+          } else if (B.spherical && flat_a) {
+            overlap = B.contact_radius - (B.state.position - points[a][k]).dot(n_k);
+          }
           if (overlap <= 0) continue;
           const std::uint64_t key = (a * n + b) * kDirections + direction_of(n_c);
           auto [slot, fresh] = index.emplace(key, contacts.size());
@@ -239,6 +251,7 @@ int MultibodySystem::advance(double dt, const std::vector<Vec3>& force,
   };
   for (int s = 0; s < substeps; ++s) {
     for (std::size_t b = 0; b < n; ++b) {
+      if (bodies_[b].prescribed) bodies_[b].prescribed(time_ + (s + 1) * h, bodies_[b].state);
       if (bodies_[b].fixed) continue;
       kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
       drift(bodies_[b].state, h);
@@ -257,7 +270,16 @@ int MultibodySystem::advance(double dt, const std::vector<Vec3>& force,
     }
     ++substeps_;
   }
+  time_ += dt;
   return substeps;
+}
+
+std::vector<MultibodySystem::Overlap> MultibodySystem::overlaps(double depth) const {
+  std::vector<Overlap> out;
+  for (const Contact& c : find_contacts()) {
+    if (c.overlap > depth) out.push_back({c.a, c.b, c.overlap});
+  }
+  return out;
 }
 
 MultibodyEnergy MultibodySystem::energy() const {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -26,8 +27,13 @@ struct ContactBody {
   RigidBody state;
   ContactMaterial material;
   double contact_radius = 0;  // R in Hertz's law; 0 = flat (a wall)
-  bool fixed = false;         // walls and fixed bodies: infinite mass, never move
-  bool flat_faces = true;     // every surface particle lies on a plane face (boxes, meshes, walls)
+  bool fixed = false;  // walls, fixed and prescribed bodies: infinite mass, not moved by forces
+  // A prescribed body: sets its state (pose and velocities) at a time; called every sub-step.
+  std::function<void(double time, RigidBody& state)> prescribed;
+  bool flat_faces = true;  // every surface particle lies on a plane face (boxes, meshes, walls)
+  // A sphere (2D: a disc) of radius contact_radius about the centre of mass: its overlap is
+  // then computed exactly from its centre, smooth as it rolls or glances off.
+  bool spherical = false;
   // Surface particles in the principal frame, relative to the centre of mass.
   std::vector<Vec3> surface_position;
   std::vector<Vec3> surface_normal;
@@ -62,6 +68,14 @@ class MultibodySystem {
   // The deepest overlap between any two bodies at the last sub-step (for soundness checks).
   double deepest_overlap() const { return deepest_overlap_; }
   long substeps_taken() const { return substeps_; }
+  double time() const { return time_; }
+
+  struct Overlap {
+    std::size_t a = 0, b = 0;
+    double depth = 0;
+  };
+  // Pairs of bodies whose faces overlap by more than `depth` now (checks of a starting layout).
+  std::vector<Overlap> overlaps(double depth) const;
 
  private:
   struct ParticlePair {
@@ -91,6 +105,7 @@ class MultibodySystem {
   double elastic_energy_ = 0;
   double deepest_overlap_ = 0;
   long substeps_ = 0;
+  double time_ = 0;
 };
 
 }  // namespace sluice

@@ -31,6 +31,11 @@ class FluidModel {
   // The stable step for the next step, from the state after the last one.
   virtual double next_time_step(const SimulationState<D>& state) const = 0;
 
+  // The fluid's force on every body point (kind kBody), indexed by its body_point, from the
+  // last force evaluation. `force` has one entry per body point, zero on entry.
+  virtual void body_point_forces(const SimulationState<D>& state,
+                                 std::vector<Vec3>& force) const = 0;
+
   // One line with the model's resolved parameters, for `sluice check` and the run header.
   virtual std::string describe() const = 0;
 };

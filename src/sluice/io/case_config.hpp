@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sluice/core/types.hpp"
+#include "sluice/io/body_config.hpp"
 #include "sluice/io/yaml_reader.hpp"
 
 namespace sluice::io {
@@ -49,6 +50,9 @@ struct WallConfig {
   std::vector<std::string> open_sides;
   Vec3 point = Vec3::Zero();   // plane: a point on it
   Vec3 normal = Vec3::Zero();  // plane: unit normal pointing into the fluid
+  // As a contact body: stiff, and leaving restitution and friction to the body it meets (the
+  // pair takes the smaller of the two).
+  ContactMaterial material{200e9, 0.3, 1.0, 1.0};
   int line = 0;
 };
 
@@ -62,6 +66,13 @@ struct ProbeConfig {
   int line = 0;
 };
 
+// Rigid-body contact (seed 000): particle pairs closer than `distance` are examined; a solid
+// sub-step is `substep_fraction` of the shortest contact period.
+struct ContactConfig {
+  double distance = 0;  // default: the particle spacing
+  double substep_fraction = 1.0 / 30;
+};
+
 struct CaseConfig {
   std::shared_ptr<const YamlSource> source;  // file name and --set overrides
   std::string name;
@@ -72,14 +83,18 @@ struct CaseConfig {
   double end_time = 0;
   double output_interval = 0;
   double probe_interval = 0;
-  FluidConfig fluid;
+  FluidConfig fluid;  // no blocks: a case of bodies alone (no model either)
   std::vector<WallConfig> walls;
+  std::vector<BodyConfig> bodies;
+  ContactConfig contact;
+  double body_interval = 0;  // time between rows of OUT/bodies/NAME.csv
   std::vector<ProbeConfig> probes;
   std::string model_name;
   YAML::Node model;  // the whole `model:` mapping, read by the model
   int model_line = 0;
 
   const std::string& file() const { return source->file; }
+  bool has_fluid() const { return !fluid.blocks.empty(); }
 };
 
 // Reads and validates a case file. `overrides` are "key.path=value" strings from --set.

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sluice/io/body_reader.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice::io {
@@ -82,6 +83,7 @@ WallConfig read_wall(MapReader& wall, const CaseConfig& c, size_t index) {
     if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
     wall.fail("type", problem);
   }
+  w.material = read_material(wall, w.material);
   wall.finish();
   return w;
 }
@@ -161,18 +163,48 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   c.output_interval = top.required_positive("output_interval");
   c.probe_interval = top.optional_positive("probe_interval", c.output_interval / 10);
 
-  c.fluid = read_fluid(top.map("fluid"), c);
-
   size_t index = 0;
+  for (auto& body : top.list_of_maps("bodies")) {
+    c.bodies.push_back(read_body(body, index++, file_name));
+    for (std::size_t k = 0; k + 1 < c.bodies.size(); ++k) {
+      if (c.bodies[k].name == c.bodies.back().name) {
+        body.fail("name",
+                  fmt::format("'{}' is already the name of bodies[{}]", c.bodies[k].name, k));
+      }
+    }
+  }
+  c.body_interval = top.optional_positive("body_interval", c.probe_interval);
+  if (top.has("contact")) {
+    MapReader contact = top.map("contact");
+    c.contact.distance = contact.optional_positive("distance", c.spacing);
+    c.contact.substep_fraction =
+        contact.optional_positive("substep_fraction", c.contact.substep_fraction);
+    if (c.contact.substep_fraction > 0.5) {
+      contact.fail("substep_fraction",
+                   "must not exceed 0.5 (a sub-step is a fraction of a contact period)");
+    }
+    contact.finish();
+  } else {
+    c.contact.distance = c.spacing;
+  }
+  // A case of bodies alone needs no fluid and no model.
+  if (top.has("fluid") || c.bodies.empty()) c.fluid = read_fluid(top.map("fluid"), c);
+
+  index = 0;
   for (auto& wall : top.list_of_maps("walls")) c.walls.push_back(read_wall(wall, c, index++));
   index = 0;
   for (auto& probe : top.list_of_maps("probes"))
     c.probes.push_back(read_probe(probe, index++, c.dimension));
 
-  MapReader model = top.map("model");
-  c.model_name = model.required<std::string>("name");
-  c.model = top.node("model");
-  c.model_line = model.line();
+  if (!c.has_fluid() && top.has("model")) {
+    top.fail("model", "a case of bodies alone (no 'fluid') has no fluid model");
+  }
+  if (c.has_fluid()) {
+    MapReader model = top.map("model");
+    c.model_name = model.required<std::string>("name");
+    c.model = top.node("model");
+    c.model_line = model.line();
+  }
   top.finish();
   return c;
 }

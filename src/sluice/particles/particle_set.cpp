@@ -22,6 +22,7 @@ void ParticleSet<D>::reorder(const std::vector<std::uint32_t>& order) {
   permute(pressure, order);
   permute(mass, order);
   permute(kind, order);
+  permute(body_point, order);
   for (auto& f : scalar_fields_) permute(f, order);
   for (auto& f : vector_fields_) permute(f, order);
 }

@@ -12,7 +12,8 @@
 namespace sluice {
 
 // Values of the `kind` array in the output; documented in docs/output.md.
-enum class ParticleKind : std::int32_t { kFluid = 0, kWall = 1 };
+// Body particles are moving walls: the fluid treats them as walls.
+enum class ParticleKind : std::int32_t { kFluid = 0, kWall = 1, kBody = 2 };
 
 template <class T>
 struct FieldHandle {
@@ -28,6 +29,7 @@ class ParticleSet {
   std::vector<Real> pressure;
   std::vector<Real> mass;
   std::vector<ParticleKind> kind;
+  std::vector<std::int32_t> body_point;  // body particles: their index in RigidBodies::points()
 
   std::size_t size() const { return position.size(); }
   bool is_fluid(std::size_t i) const { return kind[i] == ParticleKind::kFluid; }
@@ -39,6 +41,7 @@ class ParticleSet {
     pressure.push_back(0);
     mass.push_back(m);
     kind.push_back(k);
+    body_point.push_back(-1);
     for (auto& f : scalar_fields_) f.push_back(0);
     for (auto& f : vector_fields_) f.push_back(Vec<D>::Zero());
   }

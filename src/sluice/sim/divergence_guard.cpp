@@ -47,6 +47,7 @@ void DivergenceGuard<D>::remember(const SimulationState<D>& s) {
   last_good_.pressure = ps.pressure;
   last_good_.mass.clear();
   last_good_.kind = ps.kind;
+  last_good_.body_point = ps.body_point;
   last_good_time_ = s.time;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -27,6 +28,7 @@ void FrameOutput::write(const ParticleSet<D>& ps, double time) {
   io::PointArrayF32 pressure{"pressure", 1, std::vector<float>(n)};
   io::PointArrayF32 density{"density", 1, std::vector<float>(n)};
   io::PointArrayI32 kind{"kind", std::vector<std::int32_t>(n)};
+  io::PointArrayI32 body_point{"body_point", std::vector<std::int32_t>(n)};
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x = to_3d<D>(ps.position[i]);
     const Vec3 v = to_3d<D>(ps.velocity[i]);
@@ -37,9 +39,14 @@ void FrameOutput::write(const ParticleSet<D>& ps, double time) {
     pressure.values[i] = static_cast<float>(ps.pressure[i]);
     density.values[i] = static_cast<float>(ps.density[i]);
     kind.values[i] = static_cast<std::int32_t>(ps.kind[i]);
+    body_point.values[i] = ps.body_point[i];
   }
   frame.float_arrays = {std::move(velocity), std::move(pressure), std::move(density)};
   frame.int_arrays = {std::move(kind)};
+  // Which body point (and so which body: docs/output.md) a body particle is; -1 otherwise.
+  if (std::any_of(ps.body_point.begin(), ps.body_point.end(), [](auto k) { return k >= 0; })) {
+    frame.int_arrays.push_back(std::move(body_point));
+  }
   const std::string name = fmt::format("frames/frame_{:06d}.vtp", frame_count_);
   io::write_vtp(out_dir_ + "/" + name, frame);
   series_.add(time, name);

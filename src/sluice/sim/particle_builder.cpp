@@ -35,7 +35,8 @@ std::vector<Vec<D>> sample_walls(const io::CaseConfig& config, int layers) {
 }  // namespace
 
 template <int D>
-SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_radius) {
+SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_radius,
+                               const RigidBodies& bodies) {
   SimulationState<D> s;
   const Real dx = config.spacing;
   s.spacing = dx;
@@ -49,7 +50,10 @@ SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_ra
   const Real particle_volume = std::pow(dx, D);
   const Real mass = config.fluid.density * particle_volume;
 
-  const std::vector<Vec<D>> walls = sample_walls<D>(config, wall_layers(interaction_radius, dx));
+  // Without fluid, walls are contact bodies only (RigidBodies): no wall particles.
+  const std::vector<Vec<D>> walls =
+      config.has_fluid() ? sample_walls<D>(config, wall_layers(interaction_radius, dx))
+                         : std::vector<Vec<D>>{};
 
   // A grid over the walls and the domain, used first to drop fluid points that fall inside
   // walls, then as the simulation's neighbour grid.
@@ -73,14 +77,16 @@ SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_ra
       bool inside_wall = false;
       wall_grid.for_each_near(sorted_walls, x, too_close2,
                               [&](std::size_t, const Vec<D>&, Real) { inside_wall = true; });
-      if (inside_wall) continue;
+      // A body's particles sit dx/2 under its surface; fluid closer than 0.4 dx to the
+      // surface would be closer than 0.9 dx to them.
+      if (inside_wall || bodies.occupies(to_3d<D>(x), 0.4 * dx)) continue;
       s.particles.add(x, velocity, config.fluid.density, mass, ParticleKind::kFluid);
       // Hydrostatic pressure below the block's top; the model turns it into density.
       s.particles.pressure.back() = config.fluid.density * up_gravity * (x[kUpAxis<D>] - top);
     }
   }
   s.fluid_count = s.particles.size();
-  if (s.fluid_count == 0) {
+  if (s.fluid_count == 0 && config.has_fluid()) {
     throw InputError(config.file(), config.fluid.blocks.front().line, "fluid.blocks",
                      "the fluid blocks yield no fluid particle (too small for the spacing, or "
                      "inside walls)");
@@ -88,6 +94,15 @@ SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_ra
   for (const auto& w : walls) {
     s.particles.add(w, Vec<D>::Zero(), config.fluid.density, mass, ParticleKind::kWall);
   }
+  for (std::size_t k = 0; k < bodies.points().size(); ++k) {
+    const Vec<D> x = from_3d<D>(bodies.point_position(k));
+    s.particles.add(x, from_3d<D>(bodies.point_velocity(k)), config.fluid.density, mass,
+                    ParticleKind::kBody);
+    s.particles.body_point.back() = static_cast<std::int32_t>(k);
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  s.body_point_acceleration.assign(bodies.points().size(), Vec3::Zero());
 
   s.cells = CellList<D>(lo, hi, interaction_radius);
   s.cells.sort(s.particles.position, order);
@@ -95,7 +110,7 @@ SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_ra
   return s;
 }
 
-template SimulationState<2> build_state<2>(const io::CaseConfig&, Real);
-template SimulationState<3> build_state<3>(const io::CaseConfig&, Real);
+template SimulationState<2> build_state<2>(const io::CaseConfig&, Real, const RigidBodies&);
+template SimulationState<3> build_state<3>(const io::CaseConfig&, Real, const RigidBodies&);
 
 }  // namespace sluice

@@ -3,14 +3,17 @@
 #pragma once
 
 #include "sluice/io/case_config.hpp"
+#include "sluice/sim/rigid_bodies.hpp"
 #include "sluice/sim/state.hpp"
 
 namespace sluice {
 
-// Builds the state's particles, sorted by cell. Throws InputError when no fluid particle
-// remains (blocks empty or entirely inside walls).
+// Builds the state's particles, sorted by cell: fluid (none inside walls or bodies), walls, and
+// the bodies' points. Throws InputError when the case has fluid blocks but no fluid particle
+// remains (blocks too small, or entirely inside walls or bodies).
 template <int D>
-SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_radius);
+SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_radius,
+                               const RigidBodies& bodies);
 
 // Number of boundary-particle layers needed behind a wall for a given interaction radius.
 inline int wall_layers(Real interaction_radius, Real dx) {

@@ -10,6 +10,7 @@
 #include "sluice/core/progress.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/vtk_writer.hpp"
+#include "sluice/sim/body_output.hpp"
 #include "sluice/sim/divergence_guard.hpp"
 #include "sluice/sim/frame_output.hpp"
 #include "sluice/sim/probes.hpp"
@@ -26,14 +27,27 @@ double next_multiple(double time, double interval) {
 }
 
 template <int D>
+FluidEnergy fluid_energy(const SimulationState<D>& s) {
+  const auto& ps = s.particles;
+  FluidEnergy e;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (!ps.is_fluid(i)) continue;
+    e.kinetic += 0.5 * ps.mass[i] * ps.velocity[i].squaredNorm();
+    e.potential -= ps.mass[i] * s.gravity.dot(ps.position[i]);
+  }
+  return e;
+}
+
+template <int D>
 RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // Build (and so validate) everything before creating the output directory: bad input
   // must leave no directory behind.
   Simulation<D> sim(config);
   FrameOutput frames(options.out_dir, config.name);
+  BodyOutput body_output(options.out_dir, sim.bodies());
   auto& s = sim.state();
   Probes<D> probes(config.probes, options.out_dir + "/probes.csv",
-                   sim.model().interaction_radius());
+                   sim.has_model() ? sim.model().interaction_radius() : 2 * config.spacing);
   DivergenceGuard<D> guard;
   const double end_time = options.end_time.value_or(config.end_time);
 
@@ -42,10 +56,11 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.fluid_particles = s.fluid_count;
   summary.threads = exec::thread_count();
   summary.series_path = frames.series_path();
+  summary.bodies = sim.bodies().count();
   if (!options.quiet) {
-    fmt::print(stderr, "sluice: {} ({}D): {} particles ({} fluid), {} threads\n  {}\n", config.name,
-               D, summary.particles, summary.fluid_particles, summary.threads,
-               sim.model().describe());
+    fmt::print(stderr, "sluice: {} ({}D): {} particles ({} fluid), {} bodies, {} threads\n  {}\n",
+               config.name, D, summary.particles, summary.fluid_particles, summary.bodies,
+               summary.threads, sim.has_model() ? sim.model().describe() : "no fluid");
   }
 
   auto& timers = sim.timers();
@@ -54,6 +69,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   timers.time(output_slot, [&] {
     frames.write(s.particles, s.time);
     probes.record(s);
+    body_output.record(s.time, sim.bodies(), fluid_energy(s));
   });
   guard.remember(s);
 
@@ -64,8 +80,9 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   };
   double next_output = next_multiple(0, config.output_interval);
   double next_probe = probes.empty() ? end_time : next_multiple(0, config.probe_interval);
+  double next_body = sim.bodies().empty() ? end_time : next_multiple(0, config.body_interval);
   while (s.time < end_time * (1 - 1e-12)) {
-    const double until = std::min({next_output, next_probe, end_time});
+    const double until = std::min({next_output, next_probe, next_body, end_time});
     sim.step(until);
     std::optional<std::string> problem;
     timers.time(guard_slot, [&] {
@@ -85,6 +102,10 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
         probes.record(s);
         next_probe = next_multiple(s.time, config.probe_interval);
       }
+      if (!sim.bodies().empty() && (s.time >= next_body * (1 - 1e-12) || at_end)) {
+        body_output.record(s.time, sim.bodies(), fluid_energy(s));
+        next_body = next_multiple(s.time, config.body_interval);
+      }
       if (s.time >= next_output * (1 - 1e-12) || at_end) {
         frames.write(s.particles, s.time);
         next_output = next_multiple(s.time, config.output_interval);
@@ -101,6 +122,8 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.simulated_time = s.time;
   summary.wall_seconds = elapsed();
   summary.frames = frames.frames_written();
+  summary.solid_substeps = sim.bodies().substeps();
+  summary.most_substeps_per_step = sim.bodies().most_substeps();
   summary.stages = timers.entries();
   return summary;
 }
@@ -112,9 +135,11 @@ CheckSummary check(const io::CaseConfig& config) {
   CheckSummary out;
   out.particles = s.particles.size();
   out.fluid_particles = s.fluid_count;
-  out.wall_particles = out.particles - out.fluid_particles;
+  out.body_particles = sim.bodies().points().size();
+  out.wall_particles = out.particles - out.fluid_particles - out.body_particles;
   out.first_time_step = sim.next_time_step();
-  out.model = sim.model().describe();
+  out.model = sim.has_model() ? sim.model().describe() : "no fluid";
+  out.bodies = sim.bodies().count();
   return out;
 }
 
@@ -144,10 +169,14 @@ std::string stats_json(const RunSummary& r) {
       "  \"simulated_seconds\": {:.9g},\n  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n"
       "  \"particle_steps_per_second\": {:.6g},\n  \"fluid_particle_steps_per_second\": {:.6g},\n"
       "  \"wall_seconds_per_simulated_second\": {:.6g},\n  \"frames\": {},\n"
+      "  \"bodies\": {},\n  \"solid_substeps\": {},\n  \"solid_substeps_per_step\": {:.6g},\n"
+      "  \"most_solid_substeps_in_a_step\": {},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
       r.particles, r.fluid_particles, r.steps, r.simulated_time, r.wall_seconds, r.threads,
       r.particle_steps_per_second(), fluid_rate,
-      r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0, r.frames, stages);
+      r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0, r.frames, r.bodies,
+      r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
+      r.most_substeps_per_step, stages);
 }
 
 }  // namespace sluice

@@ -28,6 +28,9 @@ struct RunSummary {
   int threads = 1;
   std::vector<StageTimers::Entry> stages;
   std::string series_path;
+  std::size_t bodies = 0;
+  long solid_substeps = 0;  // solid sub-steps over the run (bodies sub-cycle within a step)
+  int most_substeps_per_step = 0;
 
   double particle_steps_per_second() const {
     return wall_seconds > 0 ? static_cast<double>(particles) * steps / wall_seconds : 0;
@@ -42,8 +45,10 @@ struct CheckSummary {
   std::size_t particles = 0;
   std::size_t fluid_particles = 0;
   std::size_t wall_particles = 0;
+  std::size_t body_particles = 0;
   double first_time_step = 0;
   std::string model;
+  std::size_t bodies = 0;
 };
 
 // Builds the case's particles and model without running a step.

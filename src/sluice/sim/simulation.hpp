@@ -8,6 +8,7 @@
 #include "sluice/core/stage_timer.hpp"
 #include "sluice/fluid/fluid_model.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/sim/rigid_bodies.hpp"
 #include "sluice/sim/state.hpp"
 
 namespace sluice {
@@ -23,16 +24,24 @@ class Simulation {
 
   SimulationState<D>& state() { return state_; }
   const SimulationState<D>& state() const { return state_; }
+  // A case of bodies alone has no fluid model.
+  bool has_model() const { return model_ != nullptr; }
   const FluidModel<D>& model() const { return *model_; }
+  const RigidBodies& bodies() const { return *bodies_; }
   const StageTimers& timers() const { return timers_; }
   StageTimers& timers() { return timers_; }
   const io::CaseConfig& config() const { return config_; }
-  double next_time_step() const { return model_->next_time_step(state_); }
+  double next_time_step() const;
 
  private:
+  void move_bodies(SimulationState<D>& s);
+  void sum_body_loads(const SimulationState<D>& s);
+
   io::CaseConfig config_;
   std::unique_ptr<FluidModel<D>> model_;
+  std::unique_ptr<RigidBodies> bodies_;
   SimulationState<D> state_;
+  std::vector<Vec3> point_force_, body_force_, body_moment_;
   std::vector<std::unique_ptr<Stage<D>>> stages_;
   StageTimers timers_;
   std::vector<std::size_t> slots_;

@@ -26,6 +26,9 @@ struct SimulationState {
   double dt = 0;
   long step = 0;
   std::size_t fluid_count = 0;
+  // Acceleration of each body point over the last step (RigidBodies::points() order): moving
+  // walls feel it in their pressure.
+  std::vector<Vec3> body_point_acceleration;
 };
 
 // A named part of the time step. Stages run in order, each timed on its own.

@@ -163,8 +163,11 @@ class WcsphModel final : public FluidModel<D> {
         if (packed_.has_fluid(begin, end)) add_wall_sums(w, begin, end, sums);
       });
       if (sums.weight > 0) {
-        // Fixed walls do not accelerate; moving bodies will pass their acceleration here.
-        const Real hydrostatic = g[0] * sums.rho_r[0] + g[1] * sums.rho_r[1] + g[2] * sums.rho_r[2];
+        // A body's wall feels g - a_wall; a fixed wall does not accelerate.
+        Vec3 g_wall = g;
+        if (ps.body_point[w] >= 0) g_wall -= s.body_point_acceleration[ps.body_point[w]];
+        const Real hydrostatic =
+            g_wall[0] * sums.rho_r[0] + g_wall[1] * sums.rho_r[1] + g_wall[2] * sums.rho_r[2];
         const Real p = (sums.pressure + hydrostatic) / sums.weight;
         ps.pressure[w] = p;
         ps.density[w] = eos_.density(p);
@@ -175,6 +178,41 @@ class WcsphModel final : public FluidModel<D> {
         ps.density[w] = eos_.rho0;
         wall_velocity[w] = ps.velocity[w];
       }
+    });
+  }
+
+  // The fluid's force on each body particle w: minus the force that w exerts on its fluid
+  // neighbours j in compute_rates (the same pair terms, seen from the other side), so that the
+  // fluid and the bodies exchange equal and opposite forces.
+  void body_point_forces(const SimulationState<D>& s, std::vector<Vec3>& force) const override {
+    const auto& ps = s.particles;
+    const auto p = packed_.view();
+    const double h = kernel_.h, c0 = eos_.c0;
+    const double eta2 = 0.01 * h * h, two_alpha_c0_h = 2 * p_.artificial_viscosity * c0 * h;
+    const double two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
+    exec::Default::for_each(ps.size(), [&](std::size_t w) {
+      if (ps.body_point[w] < 0) return;
+      Vec3 f = Vec3::Zero();
+      s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::size_t j = begin; j < end; ++j) {
+          if (p.fluid[j] == 0) continue;
+          const Vec3 r(p.x[j] - p.x[w], p.y[j] - p.y[w], p.z[j] - p.z[w]);  // r_jw
+          const double r2 = r.squaredNorm();
+          const double grad = kernel_.gradient_factor_branchless(static_cast<float>(std::sqrt(r2)));
+          if (grad == 0) continue;
+          const Vec3 u(p.vx[j] - p.wx[w], p.vy[j] - p.wy[w], p.vz[j] - p.wz[w]);  // viscous v_jw
+          const double inverse_r2 = 1 / (r2 + eta2);
+          const double artificial = -two_alpha_c0_h * std::min(u.dot(r), 0.0) * inverse_r2 /
+                                    (p.density[j] + p.density[w]);
+          const double push =
+              double(p.density[w]) * p.volume[w] *
+              (p.pressure_term[j] + p.pressure_term[w] + p.viscous_weight[w] * artificial) * grad;
+          const double laminar = p.viscous_weight[w] * p.volume[w] * two_nu_rho0 / p.density[j] *
+                                 r2 * grad * inverse_r2;
+          f -= ps.mass[j] * (laminar * u - push * r);  // minus m_j a_j(w)
+        }
+      });
+      force[ps.body_point[w]] = f;
     });
   }
 

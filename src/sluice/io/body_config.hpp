@@ -1,0 +1,62 @@
+// Rigid bodies as read from a case file (docs/case-format.md, "Bodies"): plain data in SI units,
+// angles in radians, 3D vectors (2D cases: the x-z plane, rotation about y).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "sluice/contact/hertz_mindlin.hpp"
+#include "sluice/core/types.hpp"
+#include "sluice/geometry/triangle_mesh.hpp"
+
+namespace sluice::io {
+
+enum class BodyShape { kBox, kSphere, kCylinder, kMesh };
+enum class BodyMotion { kFree, kFixed, kPrescribed };
+enum class PrescribedKind { kConstantVelocity, kSinusoid, kTable };
+
+// One row of a prescribed-motion table: the pose at `time` (rotation as angles about x, y, z).
+struct PoseSample {
+  double time = 0;
+  Vec3 position = Vec3::Zero();
+  Vec3 rotation = Vec3::Zero();
+};
+
+struct PrescribedConfig {
+  PrescribedKind kind = PrescribedKind::kConstantVelocity;
+  // constant velocity: the body's initial velocity and angular velocity, held forever.
+  // sinusoid: displacement amplitude * sin(2 pi f t + phase) and likewise rotation.
+  Vec3 amplitude = Vec3::Zero();
+  Vec3 rotation_amplitude = Vec3::Zero();  // radians
+  double frequency = 0;                    // Hz
+  double phase = 0;                        // radians
+  // table: poses from a CSV file, sorted in time, interpolated linearly, held at the ends.
+  std::string table_file;
+  std::vector<PoseSample> table;
+};
+
+struct BodyConfig {
+  std::string name;
+  BodyShape shape = BodyShape::kBox;
+  Vec3 size = Vec3::Zero();  // box edge lengths (2D: x and z)
+  double radius = 0;         // sphere, cylinder
+  double length = 0;         // cylinder (3D: along its own z axis)
+  std::string mesh_file;     // mesh: resolved against the case file's folder
+  TriangleMesh mesh;         // mesh: as read (closed, outward), scaled
+  double mesh_scale = 1;
+  double density = 0;  // one of density or mass is > 0
+  double mass = 0;
+  Vec3 position = Vec3::Zero();  // where the shape's own origin goes (box/sphere/cylinder: centre)
+  Vec3 rotation = Vec3::Zero();  // initial orientation, angles about x, then y, then z (radians)
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+  BodyMotion motion = BodyMotion::kFree;
+  PrescribedConfig prescribed;
+  std::array<bool, 3> locked_translation{};
+  std::array<bool, 3> locked_rotation{};
+  ContactMaterial material;
+  int line = 0;
+};
+
+}  // namespace sluice::io

@@ -1,0 +1,254 @@
+#include "sluice/io/body_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "sluice/geometry/mesh_io.hpp"
+
+namespace sluice::io {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+// Fails with "unknown X 'word', expected ..." and a suggestion.
+[[noreturn]] void fail_choice(const MapReader& map, const std::string& key, const std::string& what,
+                              const std::string& word, const std::vector<std::string>& choices) {
+  std::string expected;
+  for (std::size_t k = 0; k < choices.size(); ++k) {
+    expected += (k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + choices[k];
+  }
+  std::string problem = fmt::format("unknown {} '{}', expected {}", what, word, expected);
+  const std::string guess = closest_match(word, choices);
+  if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+  map.fail(key, problem);
+}
+
+// An angle or angular quantity: a vector about x, y, z in 3D, one number about y in 2D.
+Vec3 read_rotation(MapReader& map, const std::string& key, double unit) {
+  if (!map.has(key)) return Vec3::Zero();
+  if (map.source().dimension == 2) return Vec3(0, map.required<double>(key) * unit, 0);
+  return map.required<Vec3>(key) * unit;
+}
+
+PrescribedConfig read_prescribed(MapReader& map, const std::string& case_file) {
+  PrescribedConfig p;
+  const std::string type = map.required<std::string>("type");
+  if (type == "constant_velocity") {
+    p.kind = PrescribedKind::kConstantVelocity;
+  } else if (type == "sinusoid") {
+    p.kind = PrescribedKind::kSinusoid;
+    p.amplitude = map.optional<Vec3>("amplitude", Vec3::Zero());
+    p.rotation_amplitude = read_rotation(map, "rotation_amplitude_deg", kDegree);
+    p.frequency = map.required_positive("frequency");
+    p.phase = map.optional<double>("phase_deg", 0.0) * kDegree;
+  } else if (type == "table") {
+    p.kind = PrescribedKind::kTable;
+    const std::string file = map.required<std::string>("file");
+    p.table_file = (std::filesystem::path(case_file).parent_path() / file).string();
+    p.table = read_pose_table(p.table_file, map, "file");
+  } else {
+    fail_choice(map, "type", "prescribed motion", type, {"constant_velocity", "sinusoid", "table"});
+  }
+  map.finish();
+  return p;
+}
+
+void read_locks(MapReader& map, BodyConfig& b) {
+  if (map.source().dimension == 2) {  // the x-z plane: no y, no rotation about x or z
+    b.locked_translation[1] = true;
+    b.locked_rotation[0] = b.locked_rotation[2] = true;
+  }
+  const std::vector<std::string> names = {"x", "y", "z", "rx", "ry", "rz"};
+  for (const auto& dof : map.optional<std::vector<std::string>>("locked", {})) {
+    const auto found = std::find(names.begin(), names.end(), dof);
+    if (found == names.end()) fail_choice(map, "locked", "degree of freedom", dof, names);
+    const auto k = found - names.begin();
+    (k < 3 ? b.locked_translation[k] : b.locked_rotation[k - 3]) = true;
+  }
+}
+
+void read_shape(MapReader& map, BodyConfig& b, const std::string& case_file) {
+  const std::string shape = map.required<std::string>("shape");
+  if (shape == "box") {
+    b.shape = BodyShape::kBox;
+    b.size = map.required<Vec3>("size");
+    for (int a = 0; a < 3; ++a) {
+      if (map.source().dimension == 2 && a == 1) continue;
+      if (!(b.size[a] > 0)) map.fail("size", "every edge length must be greater than zero");
+    }
+  } else if (shape == "sphere" || shape == "cylinder") {
+    b.shape = shape == "sphere" ? BodyShape::kSphere : BodyShape::kCylinder;
+    b.radius = map.required_positive("radius");
+    if (b.shape == BodyShape::kCylinder && map.source().dimension == 3) {
+      b.length = map.required_positive("length");
+    }
+  } else if (shape == "mesh") {
+    b.shape = BodyShape::kMesh;
+    if (map.source().dimension == 2) map.fail("shape", "mesh bodies need a 3D case");
+    const std::string file = map.required<std::string>("file");
+    b.mesh_scale = map.optional_positive("scale", 1.0);
+    b.mesh_file = (std::filesystem::path(case_file).parent_path() / file).string();
+    b.mesh = read_mesh(b.mesh_file, b.mesh_scale, map.source().file, map.line_of("file"),
+                       map.path_of("file"));
+  } else {
+    fail_choice(map, "shape", "body shape", shape, {"box", "sphere", "cylinder", "mesh"});
+  }
+}
+
+}  // namespace
+
+ContactMaterial read_material(MapReader& owner, const ContactMaterial& fallback) {
+  ContactMaterial m = fallback;
+  if (!owner.has("material")) return m;
+  MapReader map = owner.map("material");
+  m.young = map.optional<double>("young", m.young);
+  if (!(m.young > 0)) map.fail("young", fmt::format("must be greater than zero, got {}", m.young));
+  m.poisson = map.optional<double>("poisson", m.poisson);
+  if (!(m.poisson > -1 && m.poisson < 0.5)) {
+    map.fail("poisson", fmt::format("must lie in (-1, 0.5), got {}", m.poisson));
+  }
+  m.restitution = map.optional<double>("restitution", m.restitution);
+  if (!(m.restitution > 0 && m.restitution <= 1)) {
+    map.fail("restitution", fmt::format("must lie in (0, 1], got {}", m.restitution));
+  }
+  m.friction = map.optional<double>("friction", m.friction);
+  if (!(m.friction >= 0)) {
+    map.fail("friction", fmt::format("must be zero or more, got {}", m.friction));
+  }
+  map.finish();
+  return m;
+}
+
+BodyConfig read_body(MapReader& map, std::size_t index, const std::string& case_file) {
+  BodyConfig b;
+  b.line = map.line();
+  b.name = map.optional<std::string>("name", fmt::format("body{}", index));
+  if (b.name.empty() || b.name.find_first_of("/\\ ,") != std::string::npos) {
+    map.fail("name", "must be a non-empty word without '/', '\\', ',' or spaces (it names a file)");
+  }
+  read_shape(map, b, case_file);
+
+  if (map.has("density") == map.has("mass")) {
+    map.fail_here("give exactly one of 'density' and 'mass'");
+  }
+  if (map.has("density")) {
+    b.density = map.required<double>("density");
+    if (!(b.density > 0))
+      map.fail("density", fmt::format("must be greater than zero, got {}", b.density));
+  } else {
+    b.mass = map.required<double>("mass");
+    if (!(b.mass > 0)) map.fail("mass", fmt::format("must be greater than zero, got {}", b.mass));
+  }
+
+  b.position = map.required<Vec3>("position");
+  b.rotation = read_rotation(map, "rotation_deg", kDegree);
+  b.velocity = map.optional<Vec3>("velocity", Vec3::Zero());
+  b.angular_velocity = read_rotation(map, "angular_velocity", 1.0);
+
+  const std::string motion = map.optional<std::string>("motion", "free");
+  if (motion == "free") {
+    b.motion = BodyMotion::kFree;
+  } else if (motion == "fixed") {
+    b.motion = BodyMotion::kFixed;
+  } else if (motion == "prescribed") {
+    b.motion = BodyMotion::kPrescribed;
+    if (!map.has("prescribed"))
+      map.fail("prescribed", "missing required key (motion is prescribed)");
+    MapReader prescribed = map.map("prescribed");
+    b.prescribed = read_prescribed(prescribed, case_file);
+  } else {
+    fail_choice(map, "motion", "motion", motion, {"free", "fixed", "prescribed"});
+  }
+  if (b.motion != BodyMotion::kPrescribed && map.has("prescribed")) {
+    map.fail("prescribed", "only read when motion is prescribed");
+  }
+  read_locks(map, b);
+  b.material = read_material(map, ContactMaterial{});
+  map.finish();
+  return b;
+}
+
+std::vector<PoseSample> read_pose_table(const std::string& path, const MapReader& owner,
+                                        const std::string& key) {
+  std::ifstream in(path);
+  if (!in) owner.fail(key, fmt::format("cannot read the motion table '{}'", path));
+  const std::vector<std::string> known = {"time", "x", "y", "z", "rx_deg", "ry_deg", "rz_deg"};
+  auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    std::string cell;
+    while (std::getline(stream, cell, ',')) {
+      cell.erase(0, cell.find_first_not_of(" \t\r"));
+      cell.erase(cell.find_last_not_of(" \t\r") + 1);
+      cells.push_back(cell);
+    }
+    return cells;
+  };
+  std::string line;
+  if (!std::getline(in, line)) owner.fail(key, fmt::format("motion table '{}' is empty", path));
+  std::vector<int> column;  // which of `known` each column holds
+  for (const auto& name : split(line)) {
+    const auto found = std::find(known.begin(), known.end(), name);
+    if (found == known.end()) {
+      owner.fail(key,
+                 fmt::format("motion table '{}' line 1: unknown column '{}', expected time, x, "
+                             "y, z, rx_deg, ry_deg, rz_deg",
+                             path, name));
+    }
+    column.push_back(static_cast<int>(found - known.begin()));
+  }
+  if (std::find(column.begin(), column.end(), 0) == column.end()) {
+    owner.fail(key, fmt::format("motion table '{}' line 1: no 'time' column", path));
+  }
+  std::vector<PoseSample> rows;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const auto cells = split(line);
+    if (cells.size() != column.size()) {
+      owner.fail(key, fmt::format("motion table '{}' line {}: {} values for {} columns", path,
+                                  number, cells.size(), column.size()));
+    }
+    PoseSample pose;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      double value = 0;
+      std::size_t used = 0;
+      try {
+        value = std::stod(cells[c], &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != cells[c].size() || cells[c].empty() || !std::isfinite(value)) {
+        owner.fail(key, fmt::format("motion table '{}' line {}: '{}' is not a number", path, number,
+                                    cells[c]));
+      }
+      const int k = column[c];
+      if (k == 0)
+        pose.time = value;
+      else if (k <= 3)
+        pose.position[k - 1] = value;
+      else
+        pose.rotation[k - 4] = value * kDegree;
+    }
+    if (owner.source().dimension == 2) {  // the x-z plane, turning about y
+      pose.position[1] = 0;
+      pose.rotation[0] = pose.rotation[2] = 0;
+    }
+    if (!rows.empty() && !(pose.time > rows.back().time)) {
+      owner.fail(key, fmt::format("motion table '{}' line {}: time {} does not come after {} (the "
+                                  "rows must be sorted in time)",
+                                  path, number, pose.time, rows.back().time));
+    }
+    rows.push_back(pose);
+  }
+  if (rows.empty()) owner.fail(key, fmt::format("motion table '{}' has no rows", path));
+  return rows;
+}
+
+}  // namespace sluice::io

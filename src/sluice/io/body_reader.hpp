@@ -1,0 +1,24 @@
+// Reading the `bodies` list of a case file and the contact materials of walls.
+#pragma once
+
+#include <vector>
+
+#include "sluice/io/body_config.hpp"
+#include "sluice/io/yaml_reader.hpp"
+
+namespace sluice::io {
+
+// Reads one entry of `bodies` (loading its mesh or motion table, whose paths are taken
+// relative to the folder of `case_file`). Throws InputError naming the file, line and key.
+BodyConfig read_body(MapReader& body, std::size_t index, const std::string& case_file);
+
+// Reads an optional `material` mapping (young, poisson, restitution, friction) over `fallback`.
+ContactMaterial read_material(MapReader& owner, const ContactMaterial& fallback);
+
+// The pose table of a prescribed motion: a CSV file with a header naming its columns among
+// time, x, y, z, rx_deg, ry_deg, rz_deg (time required; missing columns are zero), one row per
+// pose, strictly increasing in time. Problems are reported at `key` of `owner`.
+std::vector<PoseSample> read_pose_table(const std::string& path, const MapReader& owner,
+                                        const std::string& key);
+
+}  // namespace sluice::io

@@ -1,0 +1,60 @@
+#include "sluice/sim/prescribed_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sluice {
+
+Eigen::Quaterniond rotation_from_angles(const Vec3& angles) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angles[2], Vec3::UnitZ()) *
+                            Eigen::AngleAxisd(angles[1], Vec3::UnitY()) *
+                            Eigen::AngleAxisd(angles[0], Vec3::UnitX()));
+}
+
+ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
+  const io::PrescribedConfig& p = body.prescribed;
+  Vec3 position = body.position, angles = body.rotation;
+  Vec3 velocity = Vec3::Zero(), angular_velocity = Vec3::Zero();
+  switch (p.kind) {
+    case io::PrescribedKind::kConstantVelocity:
+      velocity = body.velocity;
+      angular_velocity = body.angular_velocity;
+      position += time * velocity;
+      angles += time * angular_velocity;
+      break;
+    case io::PrescribedKind::kSinusoid: {
+      const double omega = 2 * std::numbers::pi * p.frequency;
+      const double s = std::sin(omega * time + p.phase) - std::sin(p.phase);
+      const double c = omega * std::cos(omega * time + p.phase);
+      position += s * p.amplitude;
+      angles += s * p.rotation_amplitude;
+      velocity = c * p.amplitude;
+      angular_velocity = c * p.rotation_amplitude;
+      break;
+    }
+    case io::PrescribedKind::kTable: {
+      const auto& rows = p.table;
+      const auto after =
+          std::upper_bound(rows.begin(), rows.end(), time,
+                           [](double t, const io::PoseSample& r) { return t < r.time; });
+      if (after == rows.begin() || after == rows.end()) {
+        const io::PoseSample& held = after == rows.begin() ? rows.front() : rows.back();
+        position = held.position;
+        angles = held.rotation;
+      } else {
+        const io::PoseSample& a = *(after - 1);
+        const io::PoseSample& b = *after;
+        const double span = b.time - a.time, w = (time - a.time) / span;
+        position = (1 - w) * a.position + w * b.position;
+        angles = (1 - w) * a.rotation + w * b.rotation;
+        velocity = (b.position - a.position) / span;
+        angular_velocity = (b.rotation - a.rotation) / span;
+      }
+      break;
+    }
+  }
+  return {position, rotation_from_angles(angles), velocity, angular_velocity};
+}
+
+}  // namespace sluice

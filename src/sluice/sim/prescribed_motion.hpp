@@ -1,0 +1,26 @@
+// Prescribed body motion from a case file: the pose of the shape's origin and its velocities at
+// any time, for a constant velocity, a sinusoid about the initial pose, or a pose table.
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include "sluice/io/body_config.hpp"
+
+namespace sluice {
+
+struct ShapePose {
+  Vec3 position = Vec3::Zero();  // of the shape's origin
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+};
+
+// Rotation by angles about the fixed x, then y, then z axes (radians).
+Eigen::Quaterniond rotation_from_angles(const Vec3& angles);
+
+// The pose at `time` of a body given by `body` (its motion must be prescribed). Angular
+// velocities are the time derivatives of the angles, exact for a rotation about one axis.
+// A table is interpolated linearly and held at its first and last rows.
+ShapePose prescribed_pose(const io::BodyConfig& body, double time);
+
+}  // namespace sluice

@@ -1,0 +1,299 @@
+#include "sluice/sim/rigid_bodies.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "sluice/contact/contact_body_builder.hpp"
+#include "sluice/core/errors.hpp"
+#include "sluice/geometry/body_sampling.hpp"
+#include "sluice/rigid/mass_properties.hpp"
+#include "sluice/sim/prescribed_motion.hpp"
+
+namespace sluice {
+
+namespace {
+
+// A body's shape in its own frame: mass properties, the surface particles that contact uses,
+// and the particles the fluid sees. The fluid's boundary lies half a spacing outside its wall
+// particles, so those are sampled on the shape shrunk by dx/2 and below: the fluid then meets
+// the true surface. (A fixed wall's particles sit likewise half a spacing behind its face.)
+struct ShapeSample {
+  MassProperties mass;
+  BodySample surface;     // on the faces, with normals and areas (contact)
+  BodySample fluid_wall;  // depths dx/2, 3 dx/2, ...
+  double contact_radius = 0;
+  bool flat_faces = true;
+  bool spherical = false;  // a sphere, or a disc in 2D
+};
+
+// The radius of the sphere (2D: the disc) with the body's volume: the Hertz radius of a body
+// with flat faces.
+double equivalent_radius(double volume, int dimension) {
+  return dimension == 2 ? std::sqrt(volume / std::numbers::pi)
+                        : std::cbrt(3 * volume / (4 * std::numbers::pi));
+}
+
+ShapeSample sample_shape(const io::BodyConfig& b, double dx, int layers, int dimension) {
+  ShapeSample out;
+  const double density = b.density > 0 ? b.density : 1.0;  // scaled to the mass below
+  const double half = 0.5 * dx;
+  switch (b.shape) {
+    case io::BodyShape::kBox: {
+      const Vec3 size = dimension == 2 ? Vec3(b.size[0], 1.0, b.size[2]) : b.size;
+      out.mass = box_mass_properties(size, density);
+      out.surface = sample_box_body(size, dx, 0, dimension);
+      const Vec3 inner = (size.array() - dx).cwiseMax(half).matrix();
+      out.fluid_wall = sample_box_body(inner, dx, layers - 1, dimension);
+      out.contact_radius = equivalent_radius(out.mass.mass / density, dimension);
+      break;
+    }
+    case io::BodyShape::kSphere:
+    case io::BodyShape::kCylinder: {
+      const bool disc = dimension == 2;  // 2D: a circle, i.e. a cylinder along y, unit depth
+      const bool sphere = b.shape == io::BodyShape::kSphere && !disc;
+      if (sphere) {
+        out.mass = sphere_mass_properties(b.radius, density);
+        out.surface = sample_sphere_body(b.radius, dx, 0, 3);
+        out.fluid_wall = sample_sphere_body(std::max(b.radius - half, half), dx, layers - 1, 3);
+      } else {
+        const double length = disc ? 1.0 : b.length;
+        out.mass = cylinder_mass_properties(b.radius, length, density);
+        if (disc) std::swap(out.mass.inertia(1, 1), out.mass.inertia(2, 2));  // axis along y
+        out.surface = sample_cylinder_body(b.radius, length, dx, 0, dimension);
+        out.fluid_wall =
+            sample_cylinder_body(std::max(b.radius - half, half), std::max(length - dx, half), dx,
+                                 layers - 1, dimension);
+      }
+      out.contact_radius = b.radius;
+      out.flat_faces = false;
+      out.spherical = sphere || disc;
+      break;
+    }
+    case io::BodyShape::kMesh: {
+      out.mass = mesh_mass_properties(b.mesh, density);
+      out.surface = sample_mesh_body(b.mesh, dx, 0);
+      const BodySample all = sample_mesh_body(b.mesh, dx, layers);
+      for (std::size_t k = 0; k < all.position.size(); ++k) {
+        if (all.layer[k] < 1) continue;  // the lattice points at depth dx/2 and below
+        out.fluid_wall.position.push_back(all.position[k]);
+        out.fluid_wall.normal.push_back(Vec3::Zero());
+        out.fluid_wall.area.push_back(0);
+        out.fluid_wall.layer.push_back(all.layer[k] - 1);
+      }
+      out.contact_radius = equivalent_radius(out.mass.mass / density, 3);
+      break;
+    }
+  }
+  if (b.mass > 0) out.mass = with_mass(out.mass, b.mass);
+  return out;
+}
+
+// Principal axes of an inertia tensor as a proper rotation (columns), with the moments.
+std::pair<Eigen::Matrix3d, Vec3> principal_axes(const Eigen::Matrix3d& inertia) {
+  if (inertia.isDiagonal(1e-12 * inertia.norm()))
+    return {Eigen::Matrix3d::Identity(), inertia.diagonal()};
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia);
+  Eigen::Matrix3d axes = solver.eigenvectors();
+  if (axes.determinant() < 0) axes.col(2) *= -1;
+  return {axes, solver.eigenvalues()};
+}
+
+// Sets a body's dynamic state from the pose and velocities of its shape's origin.
+void place(RigidBody& state, const ShapePose& pose, const Vec3& com,
+           const Eigen::Quaterniond& principal) {
+  const Vec3 arm = pose.orientation * com;
+  state.orientation = (pose.orientation * principal).normalized();
+  state.position = pose.position + arm;
+  state.velocity = pose.velocity + pose.angular_velocity.cross(arm);
+  state.angular_momentum = state.world_inertia() * pose.angular_velocity;
+  state.enforce_locks();
+}
+
+}  // namespace
+
+RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
+    : configs_(config.bodies),
+      system_(config.contact.distance, config.gravity, config.contact.substep_fraction) {
+  const double dx = config.spacing;
+  const int dimension = config.dimension;
+  std::vector<std::string> names;
+  first_point_.push_back(0);
+  for (std::size_t b = 0; b < configs_.size(); ++b) {
+    const io::BodyConfig& c = configs_[b];
+    const ShapeSample shape = sample_shape(c, dx, std::max(interior_layers, 1), dimension);
+    const auto [axes, moments] = principal_axes(shape.mass.inertia);
+    MassProperties principal = shape.mass;
+    principal.inertia = moments.asDiagonal();
+    ContactBody body = make_contact_body(shape.surface, principal, c.material, shape.contact_radius,
+                                         shape.flat_faces);
+    // make_contact_body keeps the shape's axes; turn the particles into the principal frame.
+    for (auto& x : body.surface_position) x = axes.transpose() * x;
+    for (auto& n : body.surface_normal) n = axes.transpose() * n;
+    body.spherical = shape.spherical;
+    body.state.name = c.name;
+    body.state.locked_translation = c.locked_translation;
+    body.state.locked_rotation = c.locked_rotation;
+    const Eigen::Quaterniond principal_rotation(axes);
+    principal_.push_back(principal_rotation);
+    const Vec3 com = shape.mass.center_of_mass;
+    if (c.motion == io::BodyMotion::kPrescribed) {
+      body.fixed = true;
+      body.prescribed = [c, com, principal_rotation](double time, RigidBody& state) {
+        place(state, prescribed_pose(c, time), com, principal_rotation);
+      };
+      body.prescribed(0.0, body.state);
+    } else {
+      ShapePose start{c.position, rotation_from_angles(c.rotation), c.velocity, c.angular_velocity};
+      if (c.motion == io::BodyMotion::kFixed)
+        start.velocity = start.angular_velocity = Vec3::Zero();
+      body.fixed = c.motion == io::BodyMotion::kFixed;
+      place(body.state, start, com, principal_rotation);
+    }
+    // The fluid's points: surface particles alone when there is no fluid (for the output).
+    const BodySample& seen = config.has_fluid() ? shape.fluid_wall : shape.surface;
+    for (std::size_t k = 0; k < seen.position.size(); ++k) {
+      points_.push_back({b, axes.transpose() * (seen.position[k] - com),
+                         axes.transpose() * seen.normal[k], seen.area[k]});
+    }
+    first_point_.push_back(points_.size());
+    local_min_.push_back(Vec3::Constant(std::numeric_limits<double>::infinity()));
+    local_max_.push_back(-local_min_.back());
+    for (const Vec3& x : body.surface_position) {
+      local_min_.back() = local_min_.back().cwiseMin(x);
+      local_max_.back() = local_max_.back().cwiseMax(x);
+    }
+    system_.add(std::move(body));
+    names.push_back(fmt::format("body '{}'", c.name));
+  }
+  for (const auto& wall : config.walls) {
+    if (wall.shape == io::WallShape::kTank) {
+      for (auto& side : make_tank_walls(wall.box.min, wall.box.max, wall.open_sides, dx,
+                                        wall.material, dimension)) {
+        system_.add(std::move(side));
+        names.push_back(fmt::format("wall '{}'", wall.name));
+      }
+    } else if (wall.shape == io::WallShape::kBox) {
+      system_.add(make_fixed_box(wall.box.min, wall.box.max, dx, wall.material, dimension));
+      names.push_back(fmt::format("wall '{}'", wall.name));
+    }
+    // Plane walls bound the fluid only (docs/case-format.md).
+  }
+  const std::size_t n = configs_.size();
+  acceleration_.assign(n, Vec3::Zero());
+  angular_acceleration_.assign(n, Vec3::Zero());
+  fluid_force_.assign(n, Vec3::Zero());
+  fluid_moment_.assign(n, Vec3::Zero());
+
+  // The starting layout: inside the domain, and no two bodies overlapping.
+  auto fail = [&](std::size_t b, const std::string& key, const std::string& problem) {
+    const std::string path = fmt::format("bodies[{}].{}", b, key);
+    throw InputError(config.file(),
+                     config.source->overridden_paths.count(path) ? 0 : configs_[b].line, path,
+                     problem);
+  };
+  const double tolerance = 1e-9 * (config.domain.max - config.domain.min).norm();
+  io::AxisBox inside = config.domain;
+  inside.min.array() -= tolerance;
+  inside.max.array() += tolerance;
+  for (std::size_t b = 0; b < n; ++b) {
+    const ContactBody& body = system_.bodies()[b];
+    for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
+      const Vec3 x = body.state.position + body.state.orientation * body.surface_position[k];
+      if (!inside.contains(x, dimension)) {
+        fail(b, "position",
+             fmt::format("body '{}' is not inside the domain: its surface reaches ({:.4g}, {:.4g}, "
+                         "{:.4g})",
+                         configs_[b].name, x[0], x[1], x[2]));
+      }
+    }
+  }
+  const double allowed = 0.1 * dx;
+  for (const auto& o : system_.overlaps(allowed)) {
+    if (o.a >= n && o.b >= n) continue;
+    fail(
+        std::min(o.a, o.b), "position",
+        fmt::format("{} and {} overlap by {:.3g} m at the start (more than a tenth of the spacing)",
+                    names[o.a], names[o.b], o.depth));
+  }
+  for (std::size_t a = 0; a < n; ++a) {  // one body wholly inside another
+    for (std::size_t b = 0; b < n; ++b) {
+      if (a != b && body_occupies(b, state(a).position, 0)) {
+        fail(std::min(a, b), "position",
+             fmt::format("{} has its centre of mass inside {} at the start", names[a], names[b]));
+      }
+    }
+  }
+}
+
+int RigidBodies::advance(double dt, const std::vector<Vec3>& fluid_force,
+                         const std::vector<Vec3>& fluid_moment) {
+  const std::size_t n = count();
+  std::vector<Vec3> velocity(n), angular_velocity(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    velocity[b] = state(b).velocity;
+    angular_velocity[b] = state(b).angular_velocity();
+  }
+  fluid_force_ = fluid_force;
+  fluid_moment_ = fluid_moment;
+  fluid_force_.resize(n, Vec3::Zero());
+  fluid_moment_.resize(n, Vec3::Zero());
+  last_substeps_ = system_.advance(dt, fluid_force_, fluid_moment_);
+  most_substeps_ = std::max(most_substeps_, last_substeps_);
+  for (std::size_t b = 0; b < n; ++b) {
+    acceleration_[b] = (state(b).velocity - velocity[b]) / dt;
+    angular_acceleration_[b] = (state(b).angular_velocity() - angular_velocity[b]) / dt;
+  }
+  return last_substeps_;
+}
+
+Vec3 RigidBodies::point_position(std::size_t k) const {
+  const RigidBody& s = state(points_[k].body);
+  return s.position + s.orientation * points_[k].local;
+}
+
+Vec3 RigidBodies::point_velocity(std::size_t k) const {
+  const RigidBody& s = state(points_[k].body);
+  return s.velocity + s.angular_velocity().cross(s.orientation * points_[k].local);
+}
+
+Vec3 RigidBodies::point_acceleration(std::size_t k) const {
+  const std::size_t b = points_[k].body;
+  const RigidBody& s = state(b);
+  const Vec3 r = s.orientation * points_[k].local;
+  const Vec3 w = s.angular_velocity();
+  return acceleration_[b] + angular_acceleration_[b].cross(r) + w.cross(w.cross(r));
+}
+
+bool RigidBodies::occupies(const Vec3& x, double clearance) const {
+  for (std::size_t b = 0; b < count(); ++b) {
+    if (body_occupies(b, x, clearance)) return true;
+  }
+  return false;
+}
+
+bool RigidBodies::body_occupies(std::size_t b, const Vec3& x, double clearance) const {
+  const ContactBody& body = system_.bodies()[b];
+  const Vec3 local = body.state.orientation.conjugate() * (x - body.state.position);
+  if ((local.array() < local_min_[b].array() - clearance).any() ||
+      (local.array() > local_max_[b].array() + clearance).any()) {
+    return false;
+  }
+  // Inside when behind the face of the nearest surface particle.
+  double nearest = std::numeric_limits<double>::infinity();
+  std::size_t closest = 0;
+  for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
+    const double d2 = (local - body.surface_position[k]).squaredNorm();
+    if (d2 < nearest) {
+      nearest = d2;
+      closest = k;
+    }
+  }
+  return std::sqrt(nearest) < clearance ||
+         (local - body.surface_position[closest]).dot(body.surface_normal[closest]) < 0;
+}
+
+}  // namespace sluice
