@@ -5,11 +5,6 @@
 
 namespace sluice::testing {
 
-inline ContactBody body_from_sample(const BodySample& sample, const MassProperties& mass,
-                                    const ContactMaterial& material, double contact_radius) {
-  return make_contact_body(sample, mass, material, contact_radius, true);
-}
-
 // A curved body: a sphere of density 1000 kg/m^3.
 inline ContactBody sphere_body(double radius, double dx, const ContactMaterial& material) {
   ContactBody sphere =

@@ -192,6 +192,7 @@ void MultibodySystem::apply_contacts(double dt) {
     elastic_energy_ += elastic;
     deepest_overlap_ = std::max(deepest_overlap_, c.overlap);
   }
+  deepest_overlap_ever_ = std::max(deepest_overlap_ever_, deepest_overlap_);
   tangential_.swap(still_touching);  // a contact that ended forgets its history
 }
 
@@ -272,14 +273,6 @@ int MultibodySystem::advance(double dt, const std::vector<Vec3>& force,
   }
   time_ += dt;
   return substeps;
-}
-
-std::vector<MultibodySystem::Overlap> MultibodySystem::overlaps(double depth) const {
-  std::vector<Overlap> out;
-  for (const Contact& c : find_contacts()) {
-    if (c.overlap > depth) out.push_back({c.a, c.b, c.overlap});
-  }
-  return out;
 }
 
 MultibodyEnergy MultibodySystem::energy() const {

@@ -67,15 +67,10 @@ class MultibodySystem {
   const std::vector<Vec3>& contact_torque() const { return contact_torque_; }
   // The deepest overlap between any two bodies at the last sub-step (for soundness checks).
   double deepest_overlap() const { return deepest_overlap_; }
+  // The deepest overlap at any sub-step so far.
+  double deepest_overlap_ever() const { return deepest_overlap_ever_; }
   long substeps_taken() const { return substeps_; }
   double time() const { return time_; }
-
-  struct Overlap {
-    std::size_t a = 0, b = 0;
-    double depth = 0;
-  };
-  // Pairs of bodies whose faces overlap by more than `depth` now (checks of a starting layout).
-  std::vector<Overlap> overlaps(double depth) const;
 
  private:
   struct ParticlePair {
@@ -104,6 +99,7 @@ class MultibodySystem {
   std::map<std::uint64_t, ContactPair> pairs_;
   double elastic_energy_ = 0;
   double deepest_overlap_ = 0;
+  double deepest_overlap_ever_ = 0;
   long substeps_ = 0;
   double time_ = 0;
 };

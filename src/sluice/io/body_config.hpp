@@ -26,7 +26,8 @@ struct PoseSample {
 struct PrescribedConfig {
   PrescribedKind kind = PrescribedKind::kConstantVelocity;
   // constant velocity: the body's initial velocity and angular velocity, held forever.
-  // sinusoid: displacement amplitude * sin(2 pi f t + phase) and likewise rotation.
+  // sinusoid: displacement amplitude * (sin(2 pi f t + phase) - sin(phase)), so that the body
+  // starts at its position whatever the phase; rotation likewise.
   Vec3 amplitude = Vec3::Zero();
   Vec3 rotation_amplitude = Vec3::Zero();  // radians
   double frequency = 0;                    // Hz
@@ -56,7 +57,8 @@ struct BodyConfig {
   std::array<bool, 3> locked_translation{};
   std::array<bool, 3> locked_rotation{};
   ContactMaterial material;
-  int line = 0;
+  int line = 0;           // of the list entry
+  int position_line = 0;  // of its `position` key (0: given by --set)
 };
 
 }  // namespace sluice::io

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -20,7 +19,8 @@ FrameOutput::FrameOutput(const std::string& out_dir, const std::string& case_nam
 }
 
 template <int D>
-void FrameOutput::write(const ParticleSet<D>& ps, double time) {
+void FrameOutput::write(const ParticleSet<D>& ps, double time,
+                        const std::vector<std::int32_t>& body_of_point) {
   const std::size_t n = ps.size();
   io::PolyFrame frame;
   frame.points.resize(3 * n);
@@ -28,7 +28,7 @@ void FrameOutput::write(const ParticleSet<D>& ps, double time) {
   io::PointArrayF32 pressure{"pressure", 1, std::vector<float>(n)};
   io::PointArrayF32 density{"density", 1, std::vector<float>(n)};
   io::PointArrayI32 kind{"kind", std::vector<std::int32_t>(n)};
-  io::PointArrayI32 body_point{"body_point", std::vector<std::int32_t>(n)};
+  io::PointArrayI32 body{"body", std::vector<std::int32_t>(n)};
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x = to_3d<D>(ps.position[i]);
     const Vec3 v = to_3d<D>(ps.velocity[i]);
@@ -39,21 +39,22 @@ void FrameOutput::write(const ParticleSet<D>& ps, double time) {
     pressure.values[i] = static_cast<float>(ps.pressure[i]);
     density.values[i] = static_cast<float>(ps.density[i]);
     kind.values[i] = static_cast<std::int32_t>(ps.kind[i]);
-    body_point.values[i] = ps.body_point[i];
+    if (!body_of_point.empty()) {
+      body.values[i] = ps.body_point[i] < 0 ? -1 : body_of_point[ps.body_point[i]];
+    }
   }
   frame.float_arrays = {std::move(velocity), std::move(pressure), std::move(density)};
   frame.int_arrays = {std::move(kind)};
-  // Which body point (and so which body: docs/output.md) a body particle is; -1 otherwise.
-  if (std::any_of(ps.body_point.begin(), ps.body_point.end(), [](auto k) { return k >= 0; })) {
-    frame.int_arrays.push_back(std::move(body_point));
-  }
+  if (!body_of_point.empty()) frame.int_arrays.push_back(std::move(body));
   const std::string name = fmt::format("frames/frame_{:06d}.vtp", frame_count_);
   io::write_vtp(out_dir_ + "/" + name, frame);
   series_.add(time, name);
   ++frame_count_;
 }
 
-template void FrameOutput::write<2>(const ParticleSet<2>&, double);
-template void FrameOutput::write<3>(const ParticleSet<3>&, double);
+template void FrameOutput::write<2>(const ParticleSet<2>&, double,
+                                    const std::vector<std::int32_t>&);
+template void FrameOutput::write<3>(const ParticleSet<3>&, double,
+                                    const std::vector<std::int32_t>&);
 
 }  // namespace sluice

@@ -2,7 +2,9 @@
 // ParaView series OUT/CASE.pvd. Arrays: velocity, pressure, density, kind (docs/output.md).
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/particles/particle_set.hpp"
@@ -14,8 +16,11 @@ class FrameOutput {
   // Creates OUT/frames (throws InputError naming the directory if it cannot be created).
   FrameOutput(const std::string& out_dir, const std::string& case_name);
 
+  // `body_of_point`: the body of each body point (RigidBodies::points()); when not empty, the
+  // frame gets a `body` array (the body's index, -1 for fluid and walls).
   template <int D>
-  void write(const ParticleSet<D>& particles, double time);
+  void write(const ParticleSet<D>& particles, double time,
+             const std::vector<std::int32_t>& body_of_point = {});
 
   int frames_written() const { return frame_count_; }
   const std::string& series_path() const { return series_.path(); }

@@ -190,9 +190,7 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
 
   // The starting layout: inside the domain, and no two bodies overlapping.
   auto fail = [&](std::size_t b, const std::string& key, const std::string& problem) {
-    const std::string path = fmt::format("bodies[{}].{}", b, key);
-    throw InputError(config.file(),
-                     config.source->overridden_paths.count(path) ? 0 : configs_[b].line, path,
+    throw InputError(config.file(), configs_[b].position_line, fmt::format("bodies[{}].{}", b, key),
                      problem);
   };
   const double tolerance = 1e-9 * (config.domain.max - config.domain.min).norm();
@@ -211,36 +209,58 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
       }
     }
   }
-  const double allowed = 0.1 * dx;
-  for (const auto& o : system_.overlaps(allowed)) {
-    if (o.a >= n && o.b >= n) continue;
-    fail(
-        std::min(o.a, o.b), "position",
-        fmt::format("{} and {} overlap by {:.3g} m at the start (more than a tenth of the spacing)",
-                    names[o.a], names[o.b], o.depth));
-  }
-  for (std::size_t a = 0; a < n; ++a) {  // one body wholly inside another
-    for (std::size_t b = 0; b < n; ++b) {
-      if (a != b && body_occupies(b, state(a).position, 0)) {
-        fail(std::min(a, b), "position",
-             fmt::format("{} has its centre of mass inside {} at the start", names[a], names[b]));
+  // Overlaps deeper than a tenth of the spacing, however deep (a body may sit wholly inside
+  // another): every surface particle of a body is tested against every other body and wall.
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
+      if (b == a) continue;
+      const double depth = penetration(system_.bodies()[a], system_.bodies()[b]);
+      if (depth > 0.1 * dx) {
+        fail(a, "position",
+             fmt::format("{} and {} overlap at the start: a surface particle of the first lies "
+                         "{:.3g} m inside the second (more than a tenth of the spacing)",
+                         names[a], names[b], depth));
       }
     }
   }
 }
 
-int RigidBodies::advance(double dt, const std::vector<Vec3>& fluid_force,
-                         const std::vector<Vec3>& fluid_moment) {
+// How deep the surface particles of `a` lie inside `b`: for each, the distance behind the face
+// of b's nearest surface particle (0 when none is behind it).
+double RigidBodies::penetration(const ContactBody& a, const ContactBody& b) {
+  double deepest = 0;
+  for (const Vec3& pa : a.surface_position) {
+    const Vec3 x = b.state.orientation.conjugate() *
+                   (a.state.position + a.state.orientation * pa - b.state.position);
+    double nearest = std::numeric_limits<double>::infinity();
+    std::size_t closest = 0;
+    for (std::size_t k = 0; k < b.surface_position.size(); ++k) {
+      const double d2 = (x - b.surface_position[k]).squaredNorm();
+      if (d2 < nearest) {
+        nearest = d2;
+        closest = k;
+      }
+    }
+    if (b.surface_position.empty()) break;
+    deepest = std::max(deepest, -(x - b.surface_position[closest]).dot(b.surface_normal[closest]));
+  }
+  return deepest;
+}
+
+void RigidBodies::set_fluid_loads(std::vector<Vec3> force, std::vector<Vec3> moment) {
+  fluid_force_ = std::move(force);
+  fluid_moment_ = std::move(moment);
+  fluid_force_.resize(count(), Vec3::Zero());
+  fluid_moment_.resize(count(), Vec3::Zero());
+}
+
+int RigidBodies::advance(double dt) {
   const std::size_t n = count();
   std::vector<Vec3> velocity(n), angular_velocity(n);
   for (std::size_t b = 0; b < n; ++b) {
     velocity[b] = state(b).velocity;
     angular_velocity[b] = state(b).angular_velocity();
   }
-  fluid_force_ = fluid_force;
-  fluid_moment_ = fluid_moment;
-  fluid_force_.resize(n, Vec3::Zero());
-  fluid_moment_.resize(n, Vec3::Zero());
   last_substeps_ = system_.advance(dt, fluid_force_, fluid_moment_);
   most_substeps_ = std::max(most_substeps_, last_substeps_);
   for (std::size_t b = 0; b < n; ++b) {

@@ -37,10 +37,11 @@ class RigidBodies {
   }
   const std::vector<BodyPoint>& points() const { return points_; }
 
-  // Advances by dt with the fluid's force and moment (about the centre of mass) on each body
-  // held; returns the solid sub-steps taken.
-  int advance(double dt, const std::vector<Vec3>& fluid_force,
-              const std::vector<Vec3>& fluid_moment);
+  // The fluid's force and moment (about the centre of mass) on each body, from the fluid's
+  // last force evaluation; held over the solid sub-steps of the next advance.
+  void set_fluid_loads(std::vector<Vec3> force, std::vector<Vec3> moment);
+  // Advances by dt; returns the solid sub-steps taken.
+  int advance(double dt);
 
   // World position, velocity and acceleration of body point k (the acceleration of the last
   // step, for the walls' pressure).
@@ -59,13 +60,14 @@ class RigidBodies {
 
  private:
   bool body_occupies(std::size_t b, const Vec3& x, double clearance) const;
+  static double penetration(const ContactBody& a, const ContactBody& b);
 
   std::vector<io::BodyConfig> configs_;
   MultibodySystem system_;
   std::vector<BodyPoint> points_;
   std::vector<std::size_t> first_point_;  // body b's points: [first_point_[b], first_point_[b+1])
   std::vector<Vec3> local_min_, local_max_;
-  std::vector<Eigen::Quaterniond> principal_;  // shape frame -> principal frame, per body  // each
+  std::vector<Eigen::Quaterniond> principal_;  // per body: principal axes -> shape axes
                                                // body's surface box in its principal frame
   std::vector<Vec3> acceleration_, angular_acceleration_;
   std::vector<Vec3> fluid_force_, fluid_moment_;

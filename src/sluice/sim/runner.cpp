@@ -45,6 +45,9 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   Simulation<D> sim(config);
   FrameOutput frames(options.out_dir, config.name);
   BodyOutput body_output(options.out_dir, sim.bodies());
+  std::vector<std::int32_t> body_of_point;
+  for (const BodyPoint& p : sim.bodies().points())
+    body_of_point.push_back(static_cast<std::int32_t>(p.body));
   auto& s = sim.state();
   Probes<D> probes(config.probes, options.out_dir + "/probes.csv",
                    sim.has_model() ? sim.model().interaction_radius() : 2 * config.spacing);
@@ -67,7 +70,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   const std::size_t output_slot = timers.slot("output");
   const std::size_t guard_slot = timers.slot("guard");
   timers.time(output_slot, [&] {
-    frames.write(s.particles, s.time);
+    frames.write(s.particles, s.time, body_of_point);
     probes.record(s);
     body_output.record(s.time, sim.bodies(), fluid_energy(s));
   });
@@ -90,7 +93,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
       if (!problem) guard.remember(s);
     });
     if (problem) {
-      frames.write(guard.last_good(), guard.last_good_time());
+      frames.write(guard.last_good(), guard.last_good_time(), body_of_point);
       if (!options.quiet) progress.finish();
       throw DivergenceError(
           *problem + fmt::format("; the last good state (t = {:.6g} s) is the last frame of {}",
@@ -107,7 +110,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
         next_body = next_multiple(s.time, config.body_interval);
       }
       if (s.time >= next_output * (1 - 1e-12) || at_end) {
-        frames.write(s.particles, s.time);
+        frames.write(s.particles, s.time, body_of_point);
         next_output = next_multiple(s.time, config.output_interval);
       }
     });

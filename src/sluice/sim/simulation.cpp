@@ -62,7 +62,7 @@ double Simulation<D>::next_time_step() const {
 
 template <int D>
 void Simulation<D>::move_bodies(SimulationState<D>& s) {
-  bodies_->advance(s.dt, body_force_, body_moment_);
+  bodies_->advance(s.dt);
   auto& ps = s.particles;
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const std::int32_t k = ps.body_point[i];
@@ -79,14 +79,13 @@ template <int D>
 void Simulation<D>::sum_body_loads(const SimulationState<D>& s) {
   point_force_.assign(bodies_->points().size(), Vec3::Zero());
   model_->body_point_forces(s, point_force_);
-  body_force_.assign(bodies_->count(), Vec3::Zero());
-  body_moment_.assign(bodies_->count(), Vec3::Zero());
+  std::vector<Vec3> force(bodies_->count(), Vec3::Zero()), moment(bodies_->count(), Vec3::Zero());
   for (std::size_t k = 0; k < point_force_.size(); ++k) {
     const std::size_t b = bodies_->points()[k].body;
-    body_force_[b] += point_force_[k];
-    body_moment_[b] +=
-        (bodies_->point_position(k) - bodies_->state(b).position).cross(point_force_[k]);
+    force[b] += point_force_[k];
+    moment[b] += (bodies_->point_position(k) - bodies_->state(b).position).cross(point_force_[k]);
   }
+  bodies_->set_fluid_loads(std::move(force), std::move(moment));
 }
 
 template <int D>

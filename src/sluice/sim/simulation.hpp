@@ -41,7 +41,7 @@ class Simulation {
   std::unique_ptr<FluidModel<D>> model_;
   std::unique_ptr<RigidBodies> bodies_;
   SimulationState<D> state_;
-  std::vector<Vec3> point_force_, body_force_, body_moment_;
+  std::vector<Vec3> point_force_;
   std::vector<std::unique_ptr<Stage<D>>> stages_;
   StageTimers timers_;
   std::vector<std::size_t> slots_;

@@ -1,0 +1,151 @@
+// Reading bodies from a case file, and prescribed motion: documented defaults, units (degrees
+// in, radians kept), 2D conventions, and the pose table.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "sluice/core/errors.hpp"
+#include "sluice/io/case_config.hpp"
+#include "sluice/sim/prescribed_motion.hpp"
+
+namespace sluice::io {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+std::string case_3d(const std::string& body) {
+  return "dimension: 3\nspacing: 0.05\ndomain: {min: [0, 0, 0], max: [1, 1, 1]}\n"
+         "end_time: 1\noutput_interval: 0.1\nbodies:\n  - " +
+         body + "\n";
+}
+
+TEST(BodyReader, ReadsABoxWithDefaults) {
+  const CaseConfig c = parse_case(
+      case_3d("{shape: box, size: [0.1, 0.2, 0.3], density: 800, position: [0.5, 0.5, 0.5], "
+              "rotation_deg: [0, 0, 90]}"),
+      "t.yaml");
+  ASSERT_EQ(c.bodies.size(), 1u);
+  const BodyConfig& b = c.bodies[0];
+  EXPECT_EQ(b.name, "body0");
+  EXPECT_EQ(b.shape, BodyShape::kBox);
+  EXPECT_EQ(b.size, Vec3(0.1, 0.2, 0.3));
+  EXPECT_DOUBLE_EQ(b.density, 800);
+  EXPECT_DOUBLE_EQ(b.mass, 0);
+  EXPECT_NEAR(b.rotation[2], std::numbers::pi / 2, 1e-15);
+  EXPECT_EQ(b.motion, BodyMotion::kFree);
+  EXPECT_FALSE(b.locked_translation[1]);
+  const ContactMaterial fallback;
+  EXPECT_DOUBLE_EQ(b.material.young, fallback.young);
+  EXPECT_DOUBLE_EQ(b.material.restitution, fallback.restitution);
+  EXPECT_FALSE(c.has_fluid());
+  EXPECT_DOUBLE_EQ(c.contact.distance, 0.05);  // the spacing
+  EXPECT_DOUBLE_EQ(c.body_interval, c.probe_interval);
+}
+
+TEST(BodyReader, TwoDimensionalBodiesTurnAboutY) {
+  const CaseConfig c = parse_case(
+      "dimension: 2\nspacing: 0.05\ndomain: {min: [0, 0], max: [1, 1]}\nend_time: 1\n"
+      "output_interval: 0.1\nbodies:\n  - {shape: sphere, radius: 0.1, mass: 2, "
+      "position: [0.5, 0.5], rotation_deg: 30, angular_velocity: 2, locked: [x]}\n",
+      "t.yaml");
+  const BodyConfig& b = c.bodies[0];
+  EXPECT_EQ(b.position, Vec3(0.5, 0, 0.5));
+  EXPECT_NEAR(b.rotation[1], 30 * kDegree, 1e-15);
+  EXPECT_EQ(b.angular_velocity, Vec3(0, 2, 0));
+  // The plane's own locks plus the one asked for.
+  EXPECT_TRUE(b.locked_translation[0]);
+  EXPECT_TRUE(b.locked_translation[1]);
+  EXPECT_FALSE(b.locked_translation[2]);
+  EXPECT_TRUE(b.locked_rotation[0]);
+  EXPECT_FALSE(b.locked_rotation[1]);
+  EXPECT_TRUE(b.locked_rotation[2]);
+}
+
+TEST(BodyReader, WallMaterialDefaultsToStiffAndPermissive) {
+  const CaseConfig c = parse_case(
+      case_3d("{shape: sphere, radius: 0.1, density: 1000, position: [0.5, 0.5, 0.5]}") +
+          "walls:\n  - {type: tank, min: [0, 0, 0], max: [1, 1, 1], material: {friction: 0.2}}\n",
+      "t.yaml");
+  EXPECT_DOUBLE_EQ(c.walls[0].material.friction, 0.2);
+  EXPECT_DOUBLE_EQ(c.walls[0].material.restitution, 1.0);
+  EXPECT_GT(c.walls[0].material.young, 1e10);
+}
+
+class PoseTable : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / "sluice_pose_table_test";
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  CaseConfig read_with_table(const std::string& table) {
+    std::ofstream(dir_ / "motion.csv") << table;
+    std::ofstream(dir_ / "case.yaml") << case_3d(
+        "{shape: box, size: [0.1, 0.1, 0.1], density: 800, position: [0.5, 0.5, 0.5], "
+        "motion: prescribed, prescribed: {type: table, file: motion.csv}}");
+    return read_case((dir_ / "case.yaml").string());
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(PoseTable, InterpolatesAndHoldsAtTheEnds) {
+  const CaseConfig c = read_with_table("time, x, rz_deg\n0, 0.2, 0\n1, 0.4, 90\n");
+  const BodyConfig& b = c.bodies[0];
+  ASSERT_EQ(b.prescribed.table.size(), 2u);
+  const ShapePose middle = prescribed_pose(b, 0.25);
+  EXPECT_NEAR(middle.position[0], 0.25, 1e-15);
+  EXPECT_NEAR(middle.position[2], 0.0, 1e-15);  // a column left out is zero
+  EXPECT_NEAR(middle.velocity[0], 0.2, 1e-15);
+  EXPECT_NEAR(middle.angular_velocity[2], 90 * kDegree, 1e-12);
+  const Vec3 turned = middle.orientation * Vec3::UnitX();
+  EXPECT_NEAR(std::atan2(turned[1], turned[0]), 22.5 * kDegree, 1e-12);
+  const ShapePose after = prescribed_pose(b, 5.0);
+  EXPECT_NEAR(after.position[0], 0.4, 1e-15);
+  EXPECT_EQ(after.velocity, Vec3::Zero());
+}
+
+TEST_F(PoseTable, UnsortedTimesNameTheRow) {
+  try {
+    read_with_table("time,x\n0,0\n0.5,1\n0.5,2\n");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "bodies[0].prescribed.file");
+    EXPECT_NE(std::string(e.what()).find("line 4: time 0.5 does not come after 0.5"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(PrescribedMotion, SinusoidStartsAtThePoseWithItsDerivative) {
+  BodyConfig b;
+  b.position = Vec3(1, 2, 3);
+  b.motion = BodyMotion::kPrescribed;
+  b.prescribed.kind = PrescribedKind::kSinusoid;
+  b.prescribed.amplitude = Vec3(0.1, 0, 0);
+  b.prescribed.frequency = 2;
+  b.prescribed.phase = 0.3;
+  EXPECT_EQ(prescribed_pose(b, 0).position, b.position);
+  const double t = 0.1, omega = 4 * std::numbers::pi;
+  const ShapePose p = prescribed_pose(b, t);
+  EXPECT_NEAR(p.position[0], 1 + 0.1 * (std::sin(omega * t + 0.3) - std::sin(0.3)), 1e-15);
+  EXPECT_NEAR(p.velocity[0], 0.1 * omega * std::cos(omega * t + 0.3), 1e-14);
+}
+
+TEST(PrescribedMotion, ConstantVelocityMovesAndTurns) {
+  BodyConfig b;
+  b.motion = BodyMotion::kPrescribed;
+  b.velocity = Vec3(1, 0, 0);
+  b.angular_velocity = Vec3(0, 0, std::numbers::pi);
+  const ShapePose p = prescribed_pose(b, 0.5);
+  EXPECT_NEAR(p.position[0], 0.5, 1e-15);
+  const Vec3 turned = p.orientation * Vec3::UnitX();
+  EXPECT_NEAR(turned[1], 1.0, 1e-15);  // a quarter turn about z
+}
+
+}  // namespace
+}  // namespace sluice::io
