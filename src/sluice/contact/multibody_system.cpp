@@ -19,22 +19,6 @@ int direction_of(const Vec3& n) {
   return 2 * axis + (n[axis] < 0 ? 1 : 0);
 }
 
-struct Box {
-  Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 max = -Vec3::Constant(std::numeric_limits<double>::infinity());
-  void grow(const Vec3& p) {
-    min = min.cwiseMin(p);
-    max = max.cwiseMax(p);
-  }
-  bool contains(const Vec3& p, double margin) const {
-    return (p.array() >= min.array() - margin).all() && (p.array() <= max.array() + margin).all();
-  }
-  bool overlaps(const Box& o, double margin) const {
-    return (min.array() - margin <= o.max.array()).all() &&
-           (o.min.array() - margin <= max.array()).all();
-  }
-};
-
 }  // namespace
 
 MultibodySystem::MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction)
@@ -45,10 +29,6 @@ std::size_t MultibodySystem::add(ContactBody body) {
   contact_force_.assign(bodies_.size(), Vec3::Zero());
   contact_torque_.assign(bodies_.size(), Vec3::Zero());
   return bodies_.size() - 1;
-}
-
-Vec3 MultibodySystem::world_point(const ContactBody& body, std::size_t k) const {
-  return body.state.position + body.state.orientation * body.surface_position[k];
 }
 
 const ContactPair& MultibodySystem::pair(std::size_t a, std::size_t b) {
@@ -63,37 +43,36 @@ const ContactPair& MultibodySystem::pair(std::size_t a, std::size_t b) {
       .first->second;
 }
 
-std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() const {
+void MultibodySystem::place_surfaces() {
+  surfaces_.resize(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    surfaces_[b].update(bodies_[b], contact_distance_);
+}
+
+std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
+  place_surfaces();
   const std::size_t n = bodies_.size();
-  std::vector<std::vector<Vec3>> points(n), normals(n);
-  std::vector<Box> boxes(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    const ContactBody& body = bodies_[b];
-    for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
-      points[b].push_back(world_point(body, k));
-      normals[b].push_back(body.state.orientation * body.surface_normal[k]);
-      boxes[b].grow(points[b].back());
-    }
-  }
   const double reach2 = contact_distance_ * contact_distance_;
   std::vector<Contact> contacts;
   std::map<std::uint64_t, std::size_t> index;  // (a, b, direction) -> contact
+  std::vector<std::uint32_t> near_a, near_b;
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n; ++b) {
       if (bodies_[a].fixed && bodies_[b].fixed) continue;
-      if (!boxes[a].overlaps(boxes[b], contact_distance_)) continue;
-      std::vector<std::size_t> near_b;
-      for (std::size_t l = 0; l < points[b].size(); ++l) {
-        if (boxes[a].contains(points[b][l], contact_distance_)) near_b.push_back(l);
-      }
+      const WorldSurface& surface_a = surfaces_[a];
+      const WorldSurface& surface_b = surfaces_[b];
+      if (!surface_a.bounds().overlaps(surface_b.bounds(), contact_distance_)) continue;
+      surface_b.near(surface_a.bounds(), contact_distance_, near_b);
+      surface_a.near(surface_b.bounds(), contact_distance_, near_a);
+      const auto& points_a = surface_a.points();
+      const auto& points_b = surface_b.points();
       const Vec3 centres = (bodies_[b].state.position - bodies_[a].state.position).normalized();
-      for (std::size_t k = 0; k < points[a].size(); ++k) {
-        if (!boxes[b].contains(points[a][k], contact_distance_)) continue;
-        for (std::size_t l : near_b) {
-          const Vec3 d = points[b][l] - points[a][k];
+      for (std::uint32_t k : near_a) {
+        for (std::uint32_t l : near_b) {
+          const Vec3 d = points_b[l] - points_a[k];
           if (d.squaredNorm() >= reach2) continue;
-          const Vec3& n_k = normals[a][k];
-          const Vec3& n_l = normals[b][l];
+          const Vec3& n_k = surface_a.normals()[k];
+          const Vec3& n_l = surface_b.normals()[l];
           if (n_k.dot(n_l) > -0.3) continue;  // the faces do not face each other
           // From a into b. Between flat faces, the mean of the two face normals (seed 000);
           // against one flat face, that face's normal, so its plane gives the gap whatever the
@@ -112,9 +91,9 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() const {
             overlap =
                 A.contact_radius + B.contact_radius - (B.state.position - A.state.position).norm();
           } else if (A.spherical && flat_b) {
-            overlap = A.contact_radius - (A.state.position - points[b][l]).dot(n_l);
+            overlap = A.contact_radius - (A.state.position - points_b[l]).dot(n_l);
           } else if (B.spherical && flat_a) {
-            overlap = B.contact_radius - (B.state.position - points[a][k]).dot(n_k);
+            overlap = B.contact_radius - (B.state.position - points_a[k]).dot(n_k);
           }
           if (overlap <= 0) continue;
           const std::uint64_t key = (a * n + b) * kDirections + direction_of(n_c);
@@ -127,7 +106,7 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() const {
           Contact& c = contacts[slot->second];
           const double w = overlap * std::sqrt(overlap) *
                            std::min(bodies_[a].surface_area[k], bodies_[b].surface_area[l]);
-          const Vec3 midpoint = 0.5 * (points[a][k] + points[b][l]);
+          const Vec3 midpoint = 0.5 * (points_a[k] + points_b[l]);
           c.overlap = std::max(c.overlap, overlap);
           c.weight += w;
           c.point += w * midpoint;
@@ -197,13 +176,8 @@ void MultibodySystem::apply_contacts(double dt) {
 }
 
 double MultibodySystem::solid_step(double dt) {
+  place_surfaces();
   const std::size_t n = bodies_.size();
-  std::vector<Box> boxes(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    for (std::size_t k = 0; k < bodies_[b].surface_position.size(); ++k) {
-      boxes[b].grow(world_point(bodies_[b], k));
-    }
-  }
   double step = dt;
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n; ++b) {
@@ -214,8 +188,9 @@ double MultibodySystem::solid_step(double dt) {
       const double approach =
           (B.state.velocity - A.state.velocity).norm() +
           (A.state.angular_velocity().norm() + B.state.angular_velocity().norm()) *
-              (boxes[a].max - boxes[a].min).norm();
-      if (!boxes[a].overlaps(boxes[b], approach * dt + contact_distance_)) continue;
+              (surfaces_[a].bounds().max - surfaces_[a].bounds().min).norm();
+      if (!surfaces_[a].bounds().overlaps(surfaces_[b].bounds(), approach * dt + contact_distance_))
+        continue;
       const ContactPair& p = pair(a, b);
       // The stiffest the contact gets: Hertz's peak overlap for this approach speed, or the
       // overlap that carries the body's weight, whichever is deeper.

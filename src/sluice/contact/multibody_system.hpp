@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "sluice/contact/hertz_mindlin.hpp"
+#include "sluice/contact/world_surface.hpp"
 #include "sluice/rigid/rigid_body.hpp"
 
 namespace sluice {
@@ -72,6 +73,10 @@ class MultibodySystem {
   long substeps_taken() const { return substeps_; }
   double time() const { return time_; }
 
+  // The solid step that the contacts in reach during a coming step of dt need: a
+  // `substep_fraction` of the shortest contact period among them; dt when none is in reach.
+  double solid_step(double dt);
+
  private:
   struct ParticlePair {
     Vec3 point;     // midway between the two surface particles
@@ -84,16 +89,16 @@ class MultibodySystem {
     std::vector<ParticlePair> pairs;
   };
 
-  std::vector<Contact> find_contacts() const;
+  void place_surfaces();
+  std::vector<Contact> find_contacts();
   void apply_contacts(double dt);
-  double solid_step(double dt);
   const ContactPair& pair(std::size_t a, std::size_t b);
-  Vec3 world_point(const ContactBody& body, std::size_t k) const;
 
   double contact_distance_;
   Vec3 gravity_;
   double substep_fraction_;
   std::vector<ContactBody> bodies_;
+  std::vector<WorldSurface> surfaces_;  // bodies_' surface particles in the world
   std::vector<Vec3> contact_force_, contact_torque_;
   std::map<std::uint64_t, Vec3> tangential_;  // accumulated tangential displacement per contact
   std::map<std::uint64_t, ContactPair> pairs_;

@@ -183,6 +183,7 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
       contact.fail("substep_fraction",
                    "must not exceed 0.5 (a sub-step is a fraction of a contact period)");
     }
+    c.contact.subcycling = contact.optional<bool>("subcycling", c.contact.subcycling);
     contact.finish();
   } else {
     c.contact.distance = c.spacing;

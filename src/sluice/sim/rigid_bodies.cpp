@@ -92,6 +92,21 @@ ShapeSample sample_shape(const io::BodyConfig& b, double dx, int layers, int dim
   return out;
 }
 
+// The surface particle of `body` nearest to `local` (in the body's frame) and its distance;
+// the index is the particle count when the body has none.
+std::pair<std::size_t, double> nearest_surface_particle(const ContactBody& body, const Vec3& local) {
+  double nearest = std::numeric_limits<double>::infinity();
+  std::size_t closest = body.surface_position.size();
+  for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
+    const double d2 = (local - body.surface_position[k]).squaredNorm();
+    if (d2 < nearest) {
+      nearest = d2;
+      closest = k;
+    }
+  }
+  return {closest, std::sqrt(nearest)};
+}
+
 // Principal axes of an inertia tensor as a proper rotation (columns), with the moments.
 std::pair<Eigen::Matrix3d, Vec3> principal_axes(const Eigen::Matrix3d& inertia) {
   if (inertia.isDiagonal(1e-12 * inertia.norm()))
@@ -232,17 +247,10 @@ double RigidBodies::penetration(const ContactBody& a, const ContactBody& b) {
   for (const Vec3& pa : a.surface_position) {
     const Vec3 x = b.state.orientation.conjugate() *
                    (a.state.position + a.state.orientation * pa - b.state.position);
-    double nearest = std::numeric_limits<double>::infinity();
-    std::size_t closest = 0;
-    for (std::size_t k = 0; k < b.surface_position.size(); ++k) {
-      const double d2 = (x - b.surface_position[k]).squaredNorm();
-      if (d2 < nearest) {
-        nearest = d2;
-        closest = k;
-      }
+    const auto [closest, distance] = nearest_surface_particle(b, x);
+    if (closest < b.surface_position.size()) {
+      deepest = std::max(deepest, -(x - b.surface_position[closest]).dot(b.surface_normal[closest]));
     }
-    if (b.surface_position.empty()) break;
-    deepest = std::max(deepest, -(x - b.surface_position[closest]).dot(b.surface_normal[closest]));
   }
   return deepest;
 }
@@ -303,16 +311,8 @@ bool RigidBodies::body_occupies(std::size_t b, const Vec3& x, double clearance) 
     return false;
   }
   // Inside when behind the face of the nearest surface particle.
-  double nearest = std::numeric_limits<double>::infinity();
-  std::size_t closest = 0;
-  for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
-    const double d2 = (local - body.surface_position[k]).squaredNorm();
-    if (d2 < nearest) {
-      nearest = d2;
-      closest = k;
-    }
-  }
-  return std::sqrt(nearest) < clearance ||
+  const auto [closest, distance] = nearest_surface_particle(body, local);
+  return distance < clearance ||
          (local - body.surface_position[closest]).dot(body.surface_normal[closest]) < 0;
 }
 

@@ -40,6 +40,8 @@ class RigidBodies {
   // The fluid's force and moment (about the centre of mass) on each body, from the fluid's
   // last force evaluation; held over the solid sub-steps of the next advance.
   void set_fluid_loads(std::vector<Vec3> force, std::vector<Vec3> moment);
+  // The solid step the contacts in reach need over a coming step of dt (dt when none is).
+  double solid_step(double dt) { return system_.solid_step(dt); }
   // Advances by dt; returns the solid sub-steps taken.
   int advance(double dt);
 

@@ -54,8 +54,13 @@ Simulation<D>::Simulation(const io::CaseConfig& config)
 }
 
 template <int D>
-double Simulation<D>::next_time_step() const {
-  if (model_) return model_->next_time_step(state_);
+double Simulation<D>::next_time_step() {
+  if (model_) {
+    const double dt = model_->next_time_step(state_);
+    // Without sub-cycling, the fluid waits for the solid (C6's reference).
+    if (!config_.contact.subcycling && !bodies_->empty()) return bodies_->solid_step(dt);
+    return dt;
+  }
   // Bodies alone: the multibody system sub-cycles within this step as contacts require.
   return std::min({config_.output_interval, config_.body_interval, 1e-3});
 }
