@@ -16,6 +16,7 @@ sluice::MultibodySystem bouncing_ball() {
   sluice::ContactBody ball = sluice::make_contact_body(sluice::sample_sphere_body(radius, dx, 0, 3),
                                                        sluice::sphere_mass_properties(radius, 1000),
                                                        material, radius, false);
+  ball.spherical = true;
   ball.state.position = Vec3(0, 0, radius + 0.1);
   system.add(ball);
   return system;

@@ -15,8 +15,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from probes_csv import read_probe
+from runs import ROOT, save_figure
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 REFERENCE = os.path.join(ROOT, "validation", "data", "dam_break_front_koshizuka_oka_1996.tsv")
 
@@ -52,7 +52,7 @@ def interpolate(times, values, t):
 def main():
     spacings = [float(s) for s in sys.argv[1:]] or [0.025, 0.0125]
     reference = read_reference()
-    plt.figure(figsize=(6.4, 4.4))
+    fig = plt.figure(figsize=(6.4, 4.4))
     plt.plot([t for t, _ in reference], [x for _, x in reference], "ko",
              label="experiment (Koshizuka & Oka 1996)")
     for spacing in spacings:
@@ -67,10 +67,7 @@ def main():
     plt.title("F2: 2D dam break, column 1 m x 2 m")
     plt.legend(loc="upper left", fontsize=8)
     plt.grid(alpha=0.3)
-    plt.tight_layout()
-    path = os.path.join(ROOT, "docs", "img", "f2_dam_break_front.png")
-    plt.savefig(path, dpi=120)
-    print(f"wrote {path}")
+    save_figure(fig, "f2_dam_break_front.png")
 
 
 if __name__ == "__main__":

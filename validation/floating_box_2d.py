@@ -11,10 +11,7 @@ d = (A_w / 3 - z + 0.5) / (1 - 1/3).
 
 usage: /usr/bin/python3 validation/floating_box_2d.py [--out DIR] [--no-run] [--sluice PATH]
 """
-import argparse
 import os
-import subprocess
-import sys
 
 import matplotlib
 
@@ -22,8 +19,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from probes_csv import read_probe
+from runs import case_parser, read_body, require, run_case, save_figure
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # cases/floating_box_2d.yaml
 TANK_WIDTH, BOX_SIZE, X_CENTRE = 3.0, 1.0, 1.5
 WATER_AREA = TANK_WIDTH * 2.0 - 0.6 * BOX_SIZE
@@ -32,21 +29,11 @@ AVERAGE_OVER = 3.0  # s, at the end of the run
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join("out", "floating_box_2d"),
-                        help="run directory")
-    parser.add_argument("--no-run", action="store_true", help="use the existing output in --out")
-    parser.add_argument("--sluice", default=os.path.join("build", "release", "sluice"))
-    args = parser.parse_args()
-    out = os.path.join(ROOT, args.out)
-    if not args.no_run:
-        subprocess.run([os.path.join(ROOT, args.sluice), "run", "cases/floating_box_2d.yaml",
-                        "--out", out], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
-    body, probes = os.path.join(out, "bodies", "box.csv"), os.path.join(out, "probes.csv")
-    for path in (body, probes):
-        if not os.path.exists(path):
-            sys.exit(f"floating_box_2d.py: {path} is missing")
-    data = np.genfromtxt(body, delimiter=",", names=True)
+    args = case_parser("floating_box_2d", __doc__.splitlines()[0]).parse_args()
+    out = run_case("floating_box_2d", args)
+    data = read_body(out, "box")
+    probes = os.path.join(out, "probes.csv")
+    require(probes)
     t, x, z = data["time"], data["x"], data["z"]
     bottom = z - BOX_SIZE / 2
     draft = (WATER_AREA / TANK_WIDTH - bottom) / (1 - BOX_SIZE / TANK_WIDTH)
@@ -83,10 +70,7 @@ def main():
     low.set_xlabel("time [s]")
     low.grid(alpha=0.3)
     fig.suptitle("B1 floating box (2D), density 700 kg/m^3")
-    fig.tight_layout()
-    png = os.path.join(ROOT, "docs", "img", "floating_box_2d.png")
-    fig.savefig(png, dpi=120)
-    print(f"wrote {png}")
+    save_figure(fig, "floating_box_2d.png")
 
 
 if __name__ == "__main__":

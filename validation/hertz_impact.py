@@ -6,19 +6,14 @@ Writes docs/img/hertz_impact.png.
 
 usage: /usr/bin/python3 validation/hertz_impact.py [--out DIR] [--no-run] [--sluice PATH]
 """
-import argparse
 import math
-import os
-import subprocess
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from runs import case_parser, read_body, run_case, save_figure
 
 # cases/hertz_impact.yaml: the sphere; the floor is the tank wall, whose default material is
 # steel (E = 200 GPa, nu = 0.3) with infinite mass and radius.
@@ -54,19 +49,8 @@ def hertz_overlap(steps=20000):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join("out", "hertz_impact"), help="run directory")
-    parser.add_argument("--no-run", action="store_true", help="use the existing output in --out")
-    parser.add_argument("--sluice", default=os.path.join("build", "release", "sluice"))
-    args = parser.parse_args()
-    out = os.path.join(ROOT, args.out)
-    if not args.no_run:
-        subprocess.run([os.path.join(ROOT, args.sluice), "run", "cases/hertz_impact.yaml",
-                        "--out", out], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
-    path = os.path.join(out, "bodies", "sphere.csv")
-    if not os.path.exists(path):
-        sys.exit(f"hertz_impact.py: {path} is missing")
-    data = np.genfromtxt(path, delimiter=",", names=True)
+    args = case_parser("hertz_impact", __doc__.splitlines()[0]).parse_args()
+    data = read_body(run_case("hertz_impact", args), "sphere")
     t, z, fz = data["time"], data["z"], data["contact_fz"]
 
     interval = t[1] - t[0]
@@ -84,7 +68,7 @@ def main():
     t0 = (z[0] - R) / abs(data["vz"][0])
     tau, delta = hertz_overlap()
     window = slice(first, last + 1)
-    plt.figure(figsize=(6.4, 4.4))
+    fig = plt.figure(figsize=(6.4, 4.4))
     plt.plot(1e3 * t[window], fz[window], "-", lw=2.5, color="tab:blue",
              label=f"sluice, contact_fz every {interval * 1e3:g} ms")
     plt.plot(1e3 * (t0 + tau), K_N * delta ** 1.5, "k--", lw=1.2,
@@ -100,10 +84,7 @@ def main():
              transform=plt.gca().transAxes, va="top", fontsize=8)
     plt.legend(loc="upper right", fontsize=8)
     plt.grid(alpha=0.3)
-    plt.tight_layout()
-    png = os.path.join(ROOT, "docs", "img", "hertz_impact.png")
-    plt.savefig(png, dpi=120)
-    print(f"wrote {png}")
+    save_figure(fig, "hertz_impact.png")
 
 
 if __name__ == "__main__":

@@ -15,10 +15,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from probes_csv import read_probe
+from runs import ROOT, save_figure
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 RHO, G, H = 1000.0, 9.81, 1.0
 
@@ -63,10 +63,7 @@ def main():
     right.set_title("bottom pressure")
     right.legend(fontsize=8)
     fig.suptitle("F1: 2D hydrostatic tank, 1 m of water, wcsph, dx = 0.025 m")
-    fig.tight_layout()
-    path = os.path.join(ROOT, "docs", "img", "f1_hydrostatic.png")
-    fig.savefig(path, dpi=120)
-    print(f"wrote {path}")
+    save_figure(fig, "f1_hydrostatic.png")
 
 
 if __name__ == "__main__":

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 
@@ -44,13 +46,24 @@ double hertz_damping_for_restitution(double restitution) {
     throw std::invalid_argument("restitution must lie in (0, 1]");
   }
   if (restitution == 1) return 0;
+  // The bisection integrates the oscillator some 60 times: remember each answer, since a run
+  // meets the same few restitutions over and over.
+  static std::mutex guard;
+  static std::map<double, double> known;
+  {
+    const std::lock_guard<std::mutex> lock(guard);
+    if (const auto found = known.find(restitution); found != known.end()) return found->second;
+  }
   double low = 0, high = 1;
   while (rebound_speed(high) > restitution) high *= 2;
   for (int iteration = 0; iteration < 60; ++iteration) {
     const double mid = 0.5 * (low + high);
     (rebound_speed(mid) > restitution ? low : high) = mid;
   }
-  return 0.5 * (low + high);
+  const double gamma = 0.5 * (low + high);
+  const std::lock_guard<std::mutex> lock(guard);
+  known.emplace(restitution, gamma);
+  return gamma;
 }
 
 ContactPair make_contact_pair(const ContactMaterial& a, double mass_a, double radius_a,

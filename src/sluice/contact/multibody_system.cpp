@@ -46,7 +46,7 @@ const ContactPair& MultibodySystem::pair(std::size_t a, std::size_t b) {
 void MultibodySystem::place_surfaces() {
   surfaces_.resize(bodies_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    surfaces_[b].update(bodies_[b], contact_distance_);
+    surfaces_[b].update(bodies_[b], 2 * contact_distance_);
 }
 
 std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
@@ -62,18 +62,26 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
       const WorldSurface& surface_a = surfaces_[a];
       const WorldSurface& surface_b = surfaces_[b];
       if (!surface_a.bounds().overlaps(surface_b.bounds(), contact_distance_)) continue;
-      surface_b.near(surface_a.bounds(), contact_distance_, near_b);
       surface_a.near(surface_b.bounds(), contact_distance_, near_a);
       const auto& points_a = surface_a.points();
       const auto& points_b = surface_b.points();
       const Vec3 centres = (bodies_[b].state.position - bodies_[a].state.position).normalized();
+      // The particles of b within the contact distance of a particle of a: from b's own grid
+      // when b never moves, else from a grid of b's particles near a, built for this pair.
+      const PointGrid* grid_b = &surface_b.grid();
+      if (grid_b->empty()) {
+        surface_b.near(surface_a.bounds(), contact_distance_, near_b);
+        pair_grid_.build(points_b, &near_b, 2 * contact_distance_);
+        grid_b = &pair_grid_;
+      }
+      const Vec3 reach = Vec3::Constant(contact_distance_);
       for (std::uint32_t k : near_a) {
-        for (std::uint32_t l : near_b) {
+        grid_b->for_each_in_cells(points_a[k] - reach, points_a[k] + reach, [&](std::uint32_t l) {
           const Vec3 d = points_b[l] - points_a[k];
-          if (d.squaredNorm() >= reach2) continue;
+          if (d.squaredNorm() >= reach2) return;
           const Vec3& n_k = surface_a.normals()[k];
           const Vec3& n_l = surface_b.normals()[l];
-          if (n_k.dot(n_l) > -0.3) continue;  // the faces do not face each other
+          if (n_k.dot(n_l) > -0.3) return;  // the faces do not face each other
           // From a into b. Between flat faces, the mean of the two face normals (seed 000);
           // against one flat face, that face's normal, so its plane gives the gap whatever the
           // lateral offset of the pair; between two curved bodies, the line of centres.
@@ -95,7 +103,7 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
           } else if (B.spherical && flat_a) {
             overlap = B.contact_radius - (B.state.position - points_a[k]).dot(n_k);
           }
-          if (overlap <= 0) continue;
+          if (overlap <= 0) return;
           const std::uint64_t key = (a * n + b) * kDirections + direction_of(n_c);
           auto [slot, fresh] = index.emplace(key, contacts.size());
           if (fresh) {
@@ -112,7 +120,7 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
           c.point += w * midpoint;
           c.normal += w * n_c;
           c.pairs.push_back({midpoint, w});
-        }
+        });
       }
     }
   }

@@ -99,6 +99,7 @@ class MultibodySystem {
   double substep_fraction_;
   std::vector<ContactBody> bodies_;
   std::vector<WorldSurface> surfaces_;  // bodies_' surface particles in the world
+  PointGrid pair_grid_;                 // scratch: one moving body's particles near another
   std::vector<Vec3> contact_force_, contact_torque_;
   std::map<std::uint64_t, Vec3> tangential_;  // accumulated tangential displacement per contact
   std::map<std::uint64_t, ContactPair> pairs_;

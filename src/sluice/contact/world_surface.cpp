@@ -1,8 +1,8 @@
 #include "sluice/contact/world_surface.hpp"
 
-#include "sluice/contact/multibody_system.hpp"
-
 #include <cmath>
+
+#include "sluice/contact/multibody_system.hpp"
 
 namespace sluice {
 
@@ -10,13 +10,36 @@ namespace {
 constexpr std::int64_t kAxisCells = std::int64_t(1) << 20;  // cells per axis in a key
 }
 
-std::int64_t WorldSurface::key(const Vec3& p) const {
-  std::int64_t k = 0;
-  for (int a = 0; a < 3; ++a) {
-    const auto c = static_cast<std::int64_t>(std::floor(p[a] / cell_)) + kAxisCells / 2;
-    k = k * kAxisCells + c;
+PointGrid::Cell PointGrid::cell_of(const Vec3& p) const {
+  return {static_cast<std::int64_t>(std::floor(p[0] / cell_)),
+          static_cast<std::int64_t>(std::floor(p[1] / cell_)),
+          static_cast<std::int64_t>(std::floor(p[2] / cell_))};
+}
+
+std::int64_t PointGrid::key(const Cell& c) {
+  return ((c[0] + kAxisCells / 2) * kAxisCells + (c[1] + kAxisCells / 2)) * kAxisCells +
+         (c[2] + kAxisCells / 2);
+}
+
+void PointGrid::build(const std::vector<Vec3>& points, const std::vector<std::uint32_t>* subset,
+                      double cell) {
+  cell_ = cell;
+  cells_.clear();
+  if (subset) {
+    for (std::uint32_t k : *subset) cells_[key(cell_of(points[k]))].push_back(k);
+  } else {
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      cells_[key(cell_of(points[k]))].push_back(static_cast<std::uint32_t>(k));
+    }
   }
-  return k;
+}
+
+double PointGrid::cells_in(const Vec3& lo, const Vec3& hi) const {
+  const Cell first = cell_of(lo), last = cell_of(hi);
+  double count = 1;
+  for (int a = 0; a < 3; ++a)
+    count *= static_cast<double>(std::max<std::int64_t>(last[a] - first[a] + 1, 0));
+  return count;
 }
 
 void WorldSurface::update(const ContactBody& body, double cell) {
@@ -32,47 +55,25 @@ void WorldSurface::update(const ContactBody& body, double cell) {
     bounds_.grow(points_[k]);
   }
   placed_once_ = true;
-  grid_.clear();
-  if (!never_moves) return;
-  cell_ = cell;
-  for (std::size_t k = 0; k < n; ++k)
-    grid_[key(points_[k])].push_back(static_cast<std::uint32_t>(k));
+  grid_ = PointGrid{};
+  if (never_moves) grid_.build(points_, nullptr, cell);
 }
 
 void WorldSurface::near(const Bounds& region, double margin,
                         std::vector<std::uint32_t>& out) const {
   out.clear();
   if (!region.overlaps(bounds_, margin)) return;
+  const Vec3 lo = (region.min.array() - margin).max(bounds_.min.array());
+  const Vec3 hi = (region.max.array() + margin).min(bounds_.max.array());
+  auto keep = [&](std::uint32_t k) {
+    if (region.contains(points_[k], margin)) out.push_back(k);
+  };
   // A grid query visits the cells of the region; when they outnumber the particles, a plain
   // scan is cheaper.
-  double cells = 1;
-  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-  if (!grid_.empty()) {
-    lo = (region.min.array() - margin).max(bounds_.min.array());
-    hi = (region.max.array() + margin).min(bounds_.max.array());
-    for (int a = 0; a < 3; ++a) cells *= std::floor(hi[a] / cell_) - std::floor(lo[a] / cell_) + 1;
-  }
-  if (grid_.empty() || cells > static_cast<double>(points_.size())) {
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-      if (region.contains(points_[k], margin)) out.push_back(static_cast<std::uint32_t>(k));
-    }
-    return;
-  }
-  const auto first = [&](int a) { return static_cast<std::int64_t>(std::floor(lo[a] / cell_)); };
-  const auto last = [&](int a) { return static_cast<std::int64_t>(std::floor(hi[a] / cell_)); };
-  for (std::int64_t i = first(0); i <= last(0); ++i) {
-    for (std::int64_t j = first(1); j <= last(1); ++j) {
-      for (std::int64_t k = first(2); k <= last(2); ++k) {
-        const std::int64_t cell_key =
-            ((i + kAxisCells / 2) * kAxisCells + (j + kAxisCells / 2)) * kAxisCells +
-            (k + kAxisCells / 2);
-        const auto found = grid_.find(cell_key);
-        if (found == grid_.end()) continue;
-        for (std::uint32_t p : found->second) {
-          if (region.contains(points_[p], margin)) out.push_back(p);
-        }
-      }
-    }
+  if (!grid_.empty() && grid_.cells_in(lo, hi) <= static_cast<double>(points_.size())) {
+    grid_.for_each_in_cells(lo, hi, keep);
+  } else {
+    for (std::size_t k = 0; k < points_.size(); ++k) keep(static_cast<std::uint32_t>(k));
   }
 }
 

@@ -94,7 +94,8 @@ ShapeSample sample_shape(const io::BodyConfig& b, double dx, int layers, int dim
 
 // The surface particle of `body` nearest to `local` (in the body's frame) and its distance;
 // the index is the particle count when the body has none.
-std::pair<std::size_t, double> nearest_surface_particle(const ContactBody& body, const Vec3& local) {
+std::pair<std::size_t, double> nearest_surface_particle(const ContactBody& body,
+                                                        const Vec3& local) {
   double nearest = std::numeric_limits<double>::infinity();
   std::size_t closest = body.surface_position.size();
   for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
@@ -249,7 +250,8 @@ double RigidBodies::penetration(const ContactBody& a, const ContactBody& b) {
                    (a.state.position + a.state.orientation * pa - b.state.position);
     const auto [closest, distance] = nearest_surface_particle(b, x);
     if (closest < b.surface_position.size()) {
-      deepest = std::max(deepest, -(x - b.surface_position[closest]).dot(b.surface_normal[closest]));
+      deepest =
+          std::max(deepest, -(x - b.surface_position[closest]).dot(b.surface_normal[closest]));
     }
   }
   return deepest;
