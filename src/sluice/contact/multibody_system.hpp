@@ -66,12 +66,9 @@ class MultibodySystem {
   // Contact force and torque (about the centre of mass) on each body from the last sub-step.
   const std::vector<Vec3>& contact_force() const { return contact_force_; }
   const std::vector<Vec3>& contact_torque() const { return contact_torque_; }
-  // The deepest overlap between any two bodies at the last sub-step (for soundness checks).
-  double deepest_overlap() const { return deepest_overlap_; }
   // The deepest overlap at any sub-step so far.
   double deepest_overlap_ever() const { return deepest_overlap_ever_; }
   long substeps_taken() const { return substeps_; }
-  double time() const { return time_; }
 
   // The solid step that the contacts in reach during a coming step of dt need: a
   // `substep_fraction` of the shortest contact period among them; dt when none is in reach.

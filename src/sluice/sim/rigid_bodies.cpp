@@ -137,7 +137,6 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
   const double dx = config.spacing;
   const int dimension = config.dimension;
   std::vector<std::string> names;
-  first_point_.push_back(0);
   for (std::size_t b = 0; b < configs_.size(); ++b) {
     const io::BodyConfig& c = configs_[b];
     const ShapeSample shape = sample_shape(c, dx, std::max(interior_layers, 1), dimension);
@@ -175,7 +174,6 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
       points_.push_back({b, axes.transpose() * (seen.position[k] - com),
                          axes.transpose() * seen.normal[k], seen.area[k]});
     }
-    first_point_.push_back(points_.size());
     local_min_.push_back(Vec3::Constant(std::numeric_limits<double>::infinity()));
     local_max_.push_back(-local_min_.back());
     for (const Vec3& x : body.surface_position) {
@@ -271,13 +269,13 @@ int RigidBodies::advance(double dt) {
     velocity[b] = state(b).velocity;
     angular_velocity[b] = state(b).angular_velocity();
   }
-  last_substeps_ = system_.advance(dt, fluid_force_, fluid_moment_);
-  most_substeps_ = std::max(most_substeps_, last_substeps_);
+  const int substeps = system_.advance(dt, fluid_force_, fluid_moment_);
+  most_substeps_ = std::max(most_substeps_, substeps);
   for (std::size_t b = 0; b < n; ++b) {
     acceleration_[b] = (state(b).velocity - velocity[b]) / dt;
     angular_acceleration_[b] = (state(b).angular_velocity() - angular_velocity[b]) / dt;
   }
-  return last_substeps_;
+  return substeps;
 }
 
 Vec3 RigidBodies::point_position(std::size_t k) const {

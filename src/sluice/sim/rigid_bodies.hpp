@@ -57,7 +57,6 @@ class RigidBodies {
   const std::vector<Vec3>& fluid_force() const { return fluid_force_; }
   const std::vector<Vec3>& fluid_moment() const { return fluid_moment_; }
   long substeps() const { return system_.substeps_taken(); }
-  int last_substeps() const { return last_substeps_; }
   int most_substeps() const { return most_substeps_; }
 
  private:
@@ -67,13 +66,12 @@ class RigidBodies {
   std::vector<io::BodyConfig> configs_;
   MultibodySystem system_;
   std::vector<BodyPoint> points_;
-  std::vector<std::size_t> first_point_;  // body b's points: [first_point_[b], first_point_[b+1])
   std::vector<Vec3> local_min_, local_max_;
   std::vector<Eigen::Quaterniond> principal_;  // per body: principal axes -> shape axes
                                                // body's surface box in its principal frame
   std::vector<Vec3> acceleration_, angular_acceleration_;
   std::vector<Vec3> fluid_force_, fluid_moment_;
-  int last_substeps_ = 0, most_substeps_ = 0;
+  int most_substeps_ = 0;
 };
 
 }  // namespace sluice
