@@ -57,8 +57,10 @@ struct BodyConfig {
   std::array<bool, 3> locked_translation{};
   std::array<bool, 3> locked_rotation{};
   ContactMaterial material;
-  int line = 0;           // of the list entry
-  int position_line = 0;  // of its `position` key (0: given by --set)
+  int line = 0;  // of the list entry
+  // Where messages about its starting position point (MapReader::place_of).
+  std::string position_file;
+  int position_line = 0;
 };
 
 }  // namespace sluice::io

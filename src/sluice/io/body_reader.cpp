@@ -8,6 +8,7 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 
 #include "sluice/geometry/mesh_io.hpp"
 
@@ -148,7 +149,7 @@ BodyConfig read_body(MapReader& map, std::size_t index, const std::string& case_
   }
 
   b.position = map.required<Vec3>("position");
-  b.position_line = map.line_of("position");
+  std::tie(b.position_file, b.position_line) = map.place_of("position");
   b.rotation = read_rotation(map, "rotation_deg", kDegree);
   b.velocity = map.optional<Vec3>("velocity", Vec3::Zero());
   b.angular_velocity = read_rotation(map, "angular_velocity", 1.0);

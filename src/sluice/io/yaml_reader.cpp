@@ -110,10 +110,14 @@ int MapReader::line_of(const std::string& key) const {
   return line_;
 }
 
+std::pair<std::string, int> MapReader::place_of(const std::string& key) const {
+  const std::string file = file_for(path_of(key));
+  return {file, line_for(file, line_of(key))};
+}
+
 void MapReader::fail(const std::string& key, const std::string& problem) const {
-  const std::string full = path_of(key);
-  const std::string file = file_for(full);
-  throw InputError(file, line_for(file, line_of(key)), full, problem);
+  const auto [file, line] = place_of(key);
+  throw InputError(file, line, path_of(key), problem);
 }
 
 void MapReader::fail_here(const std::string& problem) const {

@@ -8,6 +8,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sluice/core/errors.hpp"
@@ -59,6 +60,9 @@ class MapReader {
   [[noreturn]] void fail_here(const std::string& problem) const;
 
   std::string path_of(const std::string& key) const;
+  // Where messages about `key` point: the file and line, or "--set a.b" and 0 for a value given
+  // on the command line.
+  std::pair<std::string, int> place_of(const std::string& key) const;
   int line_of(const std::string& key) const;
   int line() const { return line_; }
   const std::string& path() const { return path_; }

@@ -204,8 +204,8 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
 
   // The starting layout: inside the domain, and no two bodies overlapping.
   auto fail = [&](std::size_t b, const std::string& key, const std::string& problem) {
-    throw InputError(config.file(), configs_[b].position_line, fmt::format("bodies[{}].{}", b, key),
-                     problem);
+    throw InputError(configs_[b].position_file, configs_[b].position_line,
+                     fmt::format("bodies[{}].{}", b, key), problem);
   };
   const double tolerance = 1e-9 * (config.domain.max - config.domain.min).norm();
   io::AxisBox inside = config.domain;

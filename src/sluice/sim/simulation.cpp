@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "sluice/exec/policy.hpp"
 #include "sluice/sim/particle_builder.hpp"
 
 namespace sluice {
@@ -69,13 +70,13 @@ template <int D>
 void Simulation<D>::move_bodies(SimulationState<D>& s) {
   bodies_->advance(s.dt);
   auto& ps = s.particles;
-  for (std::size_t i = 0; i < ps.size(); ++i) {
+  exec::Default::for_each(ps.size(), [&](std::size_t i) {
     const std::int32_t k = ps.body_point[i];
-    if (k < 0) continue;
+    if (k < 0) return;
     ps.position[i] = from_3d<D>(bodies_->point_position(k));
     ps.velocity[i] = from_3d<D>(bodies_->point_velocity(k));
     s.body_point_acceleration[k] = bodies_->point_acceleration(k);
-  }
+  });
 }
 
 // The fluid's force on each body point, summed per body into a force and a moment about the
