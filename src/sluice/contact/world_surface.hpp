@@ -56,7 +56,6 @@ class PointGrid {
   }
   // The cells in [lo, hi] (to choose between a grid query and a plain scan).
   double cells_in(const Vec3& lo, const Vec3& hi) const;
-  double cell() const { return cell_; }
 
  private:
   using Cell = std::array<std::int64_t, 3>;

@@ -171,8 +171,7 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
     // The fluid's points: surface particles alone when there is no fluid (for the output).
     const BodySample& seen = config.has_fluid() ? shape.fluid_wall : shape.surface;
     for (std::size_t k = 0; k < seen.position.size(); ++k) {
-      points_.push_back({b, axes.transpose() * (seen.position[k] - com),
-                         axes.transpose() * seen.normal[k], seen.area[k]});
+      points_.push_back({b, axes.transpose() * (seen.position[k] - com)});
     }
     local_min_.push_back(Vec3::Constant(std::numeric_limits<double>::infinity()));
     local_max_.push_back(-local_min_.back());

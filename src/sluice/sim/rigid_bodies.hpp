@@ -14,9 +14,7 @@ namespace sluice {
 
 struct BodyPoint {
   std::size_t body = 0;
-  Vec3 local = Vec3::Zero();   // in the principal frame, relative to the centre of mass
-  Vec3 normal = Vec3::Zero();  // outward, principal frame; zero inside
-  double area = 0;             // zero inside
+  Vec3 local = Vec3::Zero();  // in the principal frame, relative to the centre of mass
 };
 
 class RigidBodies {

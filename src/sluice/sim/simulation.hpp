@@ -28,7 +28,6 @@ class Simulation {
   bool has_model() const { return model_ != nullptr; }
   const FluidModel<D>& model() const { return *model_; }
   const RigidBodies& bodies() const { return *bodies_; }
-  RigidBodies& bodies() { return *bodies_; }
   const StageTimers& timers() const { return timers_; }
   StageTimers& timers() { return timers_; }
   const io::CaseConfig& config() const { return config_; }
