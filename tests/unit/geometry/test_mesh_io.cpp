@@ -1,6 +1,5 @@
 // Reading STL and OBJ meshes, closedness and volume checks, and the errors for bad mesh files.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <Eigen/Geometry>
 #include <array>
@@ -13,6 +12,7 @@
 
 #include "sluice/core/errors.hpp"
 #include "sluice/geometry/mesh_io.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace sluice {
 namespace {
@@ -50,15 +50,6 @@ const std::string kKey = "bodies[0].mesh";
 
 class MeshIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("sluice_mesh_io_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string write_text(const std::string& name, const std::string& text) {
     const auto path = (dir_ / name).string();
     std::ofstream(path) << text;
@@ -105,7 +96,7 @@ class MeshIo : public ::testing::Test {
     return path;
   }
 
-  fs::path dir_;
+  test_support::ScratchDir dir_{"sluice_mesh_io"};
 };
 
 TEST_F(MeshIo, AsciiStlCubeLoadsClosedWithSharedCorners) {

@@ -12,6 +12,7 @@
 #include "sluice/core/errors.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/prescribed_motion.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace sluice::io {
 namespace {
@@ -78,11 +79,6 @@ TEST(BodyReader, WallMaterialDefaultsToStiffAndPermissive) {
 
 class PoseTable : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "sluice_pose_table_test";
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   CaseConfig read_with_table(const std::string& table) {
     std::ofstream(dir_ / "motion.csv") << table;
     std::ofstream(dir_ / "case.yaml") << case_3d(
@@ -90,7 +86,7 @@ class PoseTable : public ::testing::Test {
         "motion: prescribed, prescribed: {type: table, file: motion.csv}}");
     return read_case((dir_ / "case.yaml").string());
   }
-  std::filesystem::path dir_;
+  test_support::ScratchDir dir_{"sluice_pose_table"};
 };
 
 TEST_F(PoseTable, InterpolatesAndHoldsAtTheEnds) {

@@ -12,6 +12,7 @@
 
 #include "sluice/io/csv_writer.hpp"
 #include "sluice/io/vtk_writer.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace sluice::io {
 namespace {
@@ -20,13 +21,6 @@ namespace fs = std::filesystem;
 
 class IoWriterTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "sluice_io_test_XXXXXX").string();
-    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   static std::string slurp(const std::string& file) {
@@ -37,13 +31,13 @@ class IoWriterTest : public ::testing::Test {
   }
 
   bool has_tmp_file() const {
-    for (const auto& entry : fs::directory_iterator(dir_)) {
+    for (const auto& entry : fs::directory_iterator(dir_.path())) {
       if (entry.path().extension() == ".tmp") return true;
     }
     return false;
   }
 
-  fs::path dir_;
+  test_support::ScratchDir dir_{"sluice_io_test"};
 };
 
 PolyFrame sample_frame(int n) {
