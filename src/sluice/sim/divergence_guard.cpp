@@ -22,10 +22,33 @@ const char* problem_of(const SimulationState<D>& s, std::size_t i) {
     return "it left the domain";
   return nullptr;
 }
+
+const char* problem_of(const RigidBody& body, const io::AxisBox& escape_box, int dimension) {
+  if (!body.position.allFinite() || !body.velocity.allFinite() ||
+      !body.orientation.coeffs().allFinite() || !body.angular_momentum.allFinite()) {
+    return "its state is not finite";
+  }
+  if (!escape_box.contains(body.position, dimension)) return "it left the domain";
+  return nullptr;
+}
+
+template <int D>
+std::string where(const SimulationState<D>& s, const std::string& what, const Vec3& x) {
+  return fmt::format("the run diverged at step {}, t = {:.6g} s: {} at ({:.4g}, {:.4g}, {:.4g})",
+                     s.step, s.time, what, x[0], x[1], x[2]);
+}
 }  // namespace
 
 template <int D>
-std::optional<std::string> DivergenceGuard<D>::check(const SimulationState<D>& s) const {
+std::optional<std::string> DivergenceGuard<D>::check(const SimulationState<D>& s,
+                                                     const RigidBodies& bodies) const {
+  // A body first: when one breaks, its points break with it, and its name says more.
+  for (std::size_t b = 0; b < bodies.count(); ++b) {
+    if (const char* problem = problem_of(bodies.state(b), s.escape_box, D)) {
+      return where(s, fmt::format("body '{}'", bodies.config(b).name), bodies.state(b).position) +
+             ": " + problem;
+    }
+  }
   // The first bad particle by index, found in parallel; the same on any thread count.
   const double first = -exec::Default::max_of(s.particles.size(), [&](std::size_t i) {
     return problem_of(s, i) ? -static_cast<double>(i) : -std::numeric_limits<double>::infinity();
@@ -33,9 +56,7 @@ std::optional<std::string> DivergenceGuard<D>::check(const SimulationState<D>& s
   if (!std::isfinite(first)) return std::nullopt;
   const auto i = static_cast<std::size_t>(first);
   const Vec3 x = to_3d<D>(s.particles.position[i]);
-  return fmt::format(
-      "the run diverged at step {}, t = {:.6g} s: particle {} at ({:.4g}, {:.4g}, {:.4g}): {}",
-      s.step, s.time, i, x[0], x[1], x[2], problem_of(s, i));
+  return where(s, fmt::format("particle {}", i), x) + ": " + problem_of(s, i);
 }
 
 template <int D>

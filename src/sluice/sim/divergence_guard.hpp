@@ -1,4 +1,5 @@
-// Stops a run that has gone wrong: a non-finite position, velocity, density or pressure, or a
+// Stops a run that has gone wrong: a body whose state is not finite or whose centre of mass
+// left the domain, a particle with a non-finite position, velocity, density or pressure, or a
 // fluid particle outside the domain. Keeps a copy of the last good state, so the frame written
 // on the way out shows the flow just before it broke.
 #pragma once
@@ -6,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "sluice/sim/rigid_bodies.hpp"
 #include "sluice/sim/state.hpp"
 
 namespace sluice {
@@ -14,7 +16,7 @@ template <int D>
 class DivergenceGuard {
  public:
   // The problem with the state, or nothing when it is sound.
-  std::optional<std::string> check(const SimulationState<D>& s) const;
+  std::optional<std::string> check(const SimulationState<D>& s, const RigidBodies& bodies) const;
 
   // Remembers `s` as the last good state.
   void remember(const SimulationState<D>& s);

@@ -64,9 +64,8 @@ class RigidBodies {
   std::vector<io::BodyConfig> configs_;
   MultibodySystem system_;
   std::vector<BodyPoint> points_;
-  std::vector<Vec3> local_min_, local_max_;
+  std::vector<Vec3> local_min_, local_max_;    // each body's surface box, principal frame
   std::vector<Eigen::Quaterniond> principal_;  // per body: principal axes -> shape axes
-                                               // body's surface box in its principal frame
   std::vector<Vec3> acceleration_, angular_acceleration_;
   std::vector<Vec3> fluid_force_, fluid_moment_;
   int most_substeps_ = 0;

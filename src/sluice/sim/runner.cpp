@@ -88,12 +88,10 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     const double until = std::min({next_output, next_probe, next_body, end_time});
     sim.step(until);
     std::optional<std::string> problem;
-    // The guard watches the fluid; a case of bodies alone has none to watch.
-    if (s.fluid_count > 0)
-      timers.time(guard_slot, [&] {
-        problem = guard.check(s);
-        if (!problem) guard.remember(s);
-      });
+    timers.time(guard_slot, [&] {
+      problem = guard.check(s, sim.bodies());
+      if (!problem) guard.remember(s);
+    });
     if (problem) {
       frames.write(guard.last_good(), guard.last_good_time(), body_of_point);
       if (!options.quiet) progress.finish();
