@@ -21,13 +21,14 @@ def case_parser(case, description):
     return parser
 
 
-def run_case(case, args):
-    """Runs cases/<case>.yaml from the repository root into args.out, unless args.no_run;
-    returns the output directory."""
-    out = os.path.join(ROOT, args.out)
+def run_case(case, args, overrides=(), suffix=""):
+    """Runs cases/<case>.yaml from the repository root into args.out + suffix, with each
+    "key=value" of overrides as a --set, unless args.no_run; returns the output directory."""
+    out = os.path.join(ROOT, args.out + suffix)
     if not args.no_run:
+        sets = [item for o in overrides for item in ("--set", o)]
         subprocess.run([os.path.join(ROOT, args.sluice), "run",
-                        os.path.join("cases", f"{case}.yaml"), "--out", out],
+                        os.path.join("cases", f"{case}.yaml"), "--out", out] + sets,
                        cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     return out
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sluice {
 
@@ -63,6 +64,52 @@ std::vector<ContactBody> make_tank_walls(const Vec3& inside_min, const Vec3& ins
     }
   }
   return walls;
+}
+
+ContactBody make_plane_wall(const Vec3& point, const Vec3& normal, const Vec3& lo, const Vec3& hi,
+                            double dx, const ContactMaterial& material, int dimension) {
+  ContactBody wall;
+  wall.fixed = true;
+  wall.material = material;
+  wall.half_space = HalfSpace{point, normal};
+  // Tangent axes of the plane (2D: the one in the x-z plane), and the lattice over the part of
+  // the plane that the box's corners span, anchored at `point`.
+  std::vector<Vec3> tangents;
+  if (dimension == 2) {
+    tangents = {Vec3(normal[2], 0, -normal[0])};
+  } else {
+    const Vec3 t = normal.unitOrthogonal();
+    tangents = {t, normal.cross(t)};
+  }
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 c((corner & 1 ? hi : lo)[0], (corner & 2 ? hi : lo)[1], (corner & 4 ? hi : lo)[2]);
+    for (std::size_t i = 0; i < tangents.size(); ++i) {
+      low[i] = std::min(low[i], (c - point).dot(tangents[i]));
+      high[i] = std::max(high[i], (c - point).dot(tangents[i]));
+    }
+  }
+  auto first = [&](std::size_t i) { return static_cast<long>(std::floor(low[i] / dx)); };
+  auto last = [&](std::size_t i) { return static_cast<long>(std::ceil(high[i] / dx)); };
+  const bool plane_2d = tangents.size() == 1;
+  auto inside = [&](const Vec3& x) {
+    for (int a = 0; a < 3; ++a) {
+      if (plane_2d && a == 1) continue;
+      if (x[a] < lo[a] || x[a] > hi[a]) return false;
+    }
+    return true;
+  };
+  for (long i = first(0); i < last(0); ++i) {
+    for (long j = plane_2d ? 0 : first(1); j < (plane_2d ? 1 : last(1)); ++j) {
+      Vec3 x = point + (i + 0.5) * dx * tangents[0];
+      if (!plane_2d) x += (j + 0.5) * dx * tangents[1];
+      if (!inside(x)) continue;
+      wall.surface_position.push_back(x);
+      wall.surface_normal.push_back(normal);
+      wall.surface_area.push_back(plane_2d ? dx : dx * dx);
+    }
+  }
+  return wall;
 }
 
 ContactBody make_fixed_box(const Vec3& box_min, const Vec3& box_max, double dx,

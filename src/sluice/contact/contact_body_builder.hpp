@@ -1,5 +1,5 @@
 // Building contact bodies from sampled shapes: a free body from a shape's surface particles and
-// mass properties, and a fixed square patch of floor.
+// mass properties; fixed walls (a patch of floor, a tank's sides, a plane, a solid box).
 #pragma once
 
 #include <string>
@@ -27,6 +27,12 @@ ContactBody make_floor_patch(double half_width, double dx, const ContactMaterial
 std::vector<ContactBody> make_tank_walls(const Vec3& inside_min, const Vec3& inside_max,
                                          const std::vector<std::string>& open_sides, double dx,
                                          const ContactMaterial& material, int dimension = 3);
+
+// A plane wall through `point` with unit `normal` (out of the solid) as one fixed body: its
+// part inside [lo, hi] tiled with surface particles of spacing dx (dimension 2: the line in the
+// x-z plane, lo and hi in x and z).
+ContactBody make_plane_wall(const Vec3& point, const Vec3& normal, const Vec3& lo, const Vec3& hi,
+                            double dx, const ContactMaterial& material, int dimension);
 
 // A solid box [box_min, box_max] as one fixed body, its surface particles facing out.
 ContactBody make_fixed_box(const Vec3& box_min, const Vec3& box_max, double dx,

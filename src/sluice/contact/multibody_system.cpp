@@ -19,6 +19,12 @@ int direction_of(const Vec3& n) {
   return 2 * axis + (n[axis] < 0 ? 1 : 0);
 }
 
+// How far the box lies in front of the plane: the smallest signed distance of its corners.
+double height_above(const Bounds& box, const HalfSpace& plane) {
+  const Vec3 centre = 0.5 * (box.min + box.max), half = 0.5 * (box.max - box.min);
+  return (centre - plane.point).dot(plane.normal) - half.dot(plane.normal.cwiseAbs());
+}
+
 }  // namespace
 
 MultibodySystem::MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction)
@@ -43,6 +49,15 @@ const ContactPair& MultibodySystem::pair(std::size_t a, std::size_t b) {
       .first->second;
 }
 
+bool MultibodySystem::in_reach(std::size_t a, std::size_t b, double margin) const {
+  const Bounds& box_a = surfaces_[a].bounds();
+  const Bounds& box_b = surfaces_[b].bounds();
+  if (!box_a.overlaps(box_b, margin)) return false;
+  if (bodies_[a].half_space) return height_above(box_b, *bodies_[a].half_space) <= margin;
+  if (bodies_[b].half_space) return height_above(box_a, *bodies_[b].half_space) <= margin;
+  return true;
+}
+
 void MultibodySystem::place_surfaces() {
   surfaces_.resize(bodies_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -61,7 +76,7 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
       if (bodies_[a].fixed && bodies_[b].fixed) continue;
       const WorldSurface& surface_a = surfaces_[a];
       const WorldSurface& surface_b = surfaces_[b];
-      if (!surface_a.bounds().overlaps(surface_b.bounds(), contact_distance_)) continue;
+      if (!in_reach(a, b, contact_distance_)) continue;
       surface_a.near(surface_b.bounds(), contact_distance_, near_a);
       const auto& points_a = surface_a.points();
       const auto& points_b = surface_b.points();
@@ -143,10 +158,24 @@ void MultibodySystem::apply_contacts(double dt) {
     const ContactBody& B = bodies_[c.b];
     const ContactPair& law = pair(c.a, c.b);
     // On a curved body the force acts on the line through its centre along the normal (a
-    // sphere's contact force passes through its centre); on a flat face, where it is applied.
+    // sphere's contact force passes through its centre), for a sphere at its true contact
+    // point, a radius less half the overlap from the centre (the sampled pairs lie around it
+    // and their mean is nearer the centre, which would make it roll on a smaller radius); on a
+    // flat face, where it is applied. The relative velocity is taken where the force acts: a
+    // rolling sphere's surface at a sampled point beside the true contact would add a normal
+    // velocity of omega times the offset and make the dashpot push and pull.
     auto lever = [&](const ContactBody& body, const Vec3& point) -> Vec3 {
       const Vec3 arm = point - body.state.position;
-      return body.flat_faces ? arm : Vec3(arm.dot(c.normal) * c.normal);
+      if (body.flat_faces) return arm;
+      const double along = arm.dot(c.normal);
+      if (!body.spherical) return along * c.normal;
+      return std::copysign(body.contact_radius - 0.5 * c.overlap, along) * c.normal;
+    };
+    auto relative_velocity = [&](const Vec3& point) -> Vec3 {
+      auto velocity = [&](const ContactBody& body) {
+        return body.state.velocity_at(body.state.position + lever(body, point));
+      };
+      return velocity(B) - velocity(A);
     };
     auto add = [&](const Vec3& force, const Vec3& point) {
       contact_force_[c.b] += force;
@@ -158,8 +187,7 @@ void MultibodySystem::apply_contacts(double dt) {
     // each share damped with the normal velocity at its own point.
     double normal_force = 0;
     for (const ParticlePair& p : c.pairs) {
-      const double v_n =
-          (B.state.velocity_at(p.point) - A.state.velocity_at(p.point)).dot(c.normal);
+      const double v_n = relative_velocity(p.point).dot(c.normal);
       const double share = p.weight / c.weight * hertz_normal_force(law, c.overlap, v_n);
       add(share * c.normal, p.point);
       normal_force += share;
@@ -168,7 +196,7 @@ void MultibodySystem::apply_contacts(double dt) {
     const std::uint64_t key = (c.a * n + c.b) * kDirections + direction_of(c.normal);
     Vec3 tangential = Vec3::Zero();
     if (auto found = tangential_.find(key); found != tangential_.end()) tangential = found->second;
-    const Vec3 relative = B.state.velocity_at(c.point) - A.state.velocity_at(c.point);
+    const Vec3 relative = relative_velocity(c.point);
     const Vec3 v_t = relative - relative.dot(c.normal) * c.normal;
     double elastic = 0.4 * law.normal_stiffness * c.overlap * c.overlap * std::sqrt(c.overlap);
     bool sliding = false;
@@ -197,8 +225,7 @@ double MultibodySystem::solid_step(double dt) {
           (B.state.velocity - A.state.velocity).norm() +
           (A.state.angular_velocity().norm() + B.state.angular_velocity().norm()) *
               (surfaces_[a].bounds().max - surfaces_[a].bounds().min).norm();
-      if (!surfaces_[a].bounds().overlaps(surfaces_[b].bounds(), approach * dt + contact_distance_))
-        continue;
+      if (!in_reach(a, b, approach * dt + contact_distance_)) continue;
       const ContactPair& p = pair(a, b);
       // The stiffest the contact gets: Hertz's peak overlap for this approach speed, or the
       // overlap that carries the body's weight, whichever is deeper.

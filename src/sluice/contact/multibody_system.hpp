@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,12 @@
 #include "sluice/rigid/rigid_body.hpp"
 
 namespace sluice {
+
+// The solid side of a plane wall: the points x with (x - point) . normal < 0.
+struct HalfSpace {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();  // unit, out of the solid
+};
 
 struct ContactBody {
   RigidBody state;
@@ -35,6 +42,9 @@ struct ContactBody {
   // A sphere (2D: a disc) of radius contact_radius about the centre of mass: its overlap is
   // then computed exactly from its centre, smooth as it rolls or glances off.
   bool spherical = false;
+  // A plane wall: reach is measured to its plane, since the bounding box of a sloping plane
+  // spans the domain and would put every body in reach.
+  std::optional<HalfSpace> half_space;
   // Surface particles in the principal frame, relative to the centre of mass.
   std::vector<Vec3> surface_position;
   std::vector<Vec3> surface_normal;
@@ -87,6 +97,9 @@ class MultibodySystem {
   };
 
   void place_surfaces();
+  // Whether bodies a and b (placed) come within `margin` of each other: their bounding boxes,
+  // and a plane wall's plane.
+  bool in_reach(std::size_t a, std::size_t b, double margin) const;
   std::vector<Contact> find_contacts();
   void apply_contacts(double dt);
   const ContactPair& pair(std::size_t a, std::size_t b);

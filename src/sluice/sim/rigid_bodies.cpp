@@ -182,18 +182,27 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
     system_.add(std::move(body));
     names.push_back(fmt::format("body '{}'", c.name));
   }
-  for (const auto& wall : config.walls) {
+  // Walls as contact bodies, when there is a body to touch them.
+  const std::vector<io::WallConfig> no_walls;
+  for (const auto& wall : configs_.empty() ? no_walls : config.walls) {
     if (wall.shape == io::WallShape::kTank) {
       for (auto& side : make_tank_walls(wall.box.min, wall.box.max, wall.open_sides, dx,
                                         wall.material, dimension)) {
         system_.add(std::move(side));
         names.push_back(fmt::format("wall '{}'", wall.name));
       }
-    } else if (wall.shape == io::WallShape::kBox) {
-      system_.add(make_fixed_box(wall.box.min, wall.box.max, dx, wall.material, dimension));
+    } else {
+      if (wall.shape == io::WallShape::kBox) {
+        system_.add(make_fixed_box(wall.box.min, wall.box.max, dx, wall.material, dimension));
+      } else {
+        // The plane over the domain and a contact distance beyond, so that a body at the
+        // domain's edge still meets it.
+        const Vec3 margin = Vec3::Constant(config.contact.distance);
+        system_.add(make_plane_wall(wall.point, wall.normal, config.domain.min - margin,
+                                    config.domain.max + margin, dx, wall.material, dimension));
+      }
       names.push_back(fmt::format("wall '{}'", wall.name));
     }
-    // Plane walls bound the fluid only (docs/case-format.md).
   }
   const std::size_t n = configs_.size();
   acceleration_.assign(n, Vec3::Zero());

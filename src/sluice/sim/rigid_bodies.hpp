@@ -19,9 +19,9 @@ struct BodyPoint {
 
 class RigidBodies {
  public:
-  // Samples every body with `interior_layers` layers under its surface, adds the tank and box
-  // walls as fixed contact bodies, and checks the starting layout. Throws InputError for a
-  // body outside the domain or bodies that overlap.
+  // Samples every body with `interior_layers` layers under its surface, adds the walls as
+  // fixed contact bodies, and checks the starting layout. Throws InputError for a body outside
+  // the domain, or overlapping another body or a wall.
   RigidBodies(const io::CaseConfig& config, int interior_layers);
 
   std::size_t count() const { return configs_.size(); }  // the case's bodies (not the walls)
