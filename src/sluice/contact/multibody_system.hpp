@@ -1,13 +1,14 @@
 // Rigid bodies in contact (seed 000: Amaro Junior, Cheng & Osello 2019). Each body carries
 // surface particles with the outward normal and area of the face they sample. For two bodies
-// within reach, every pair of surface particles (k, l) closer than the contact distance gives
-// a contact normal from the faces, n_c = (n_k - n_l) / |n_k - n_l|, and the gap between the
-// faces along it, (r_l - r_k) . n_c, rather than the bumpy particle-to-particle direction.
-// The overlapping pairs of one body pair and one contact direction form one contact: its
-// overlap is the deepest pair's and its normal the overlap-weighted mean, so the force follows
-// the Hertz-Mindlin law of the bodies whatever the number of particle pairs. The force is
-// shared among the pairs in proportion to overlap^(3/2) times area, each share with the dashpot
-// of its own normal velocity: a tilt shifts the force to the deeper side and rocking is damped.
+// within reach, each surface particle k of one meets the nearest particle l of the other whose
+// face faces its own, closer than the contact distance: the pair gives a contact normal from
+// the faces, n_c = (n_k - n_l) / |n_k - n_l|, and the gap between the faces along it,
+// (r_l - r_k) . n_c, rather than the bumpy particle-to-particle direction. The overlapping
+// pairs of one body pair and one contact direction form one contact. Each pair carries the
+// Hertz law of the bodies at its own overlap, with the dashpot of its own normal velocity,
+// times its share of the pairs' area: a face pressed evenly follows the Hertz-Mindlin law of
+// the bodies whatever the number of pairs, a tilt shifts the force to the deeper side, and
+// rocking is damped.
 // Solid sub-cycling: a step of the caller (the fluid's) is split into as many solid sub-steps
 // as the stiffest contact in reach needs; with no contact in reach it is one step.
 #pragma once
@@ -86,12 +87,15 @@ class MultibodySystem {
 
  private:
   struct ParticlePair {
-    Vec3 point;     // midway between the two surface particles
-    double weight;  // overlap^(3/2) times the smaller area
+    Vec3 point;      // midway between the two surface particles
+    double overlap;  // minus the gap between the faces
+    double area;     // the smaller of the two particles' areas
   };
   struct Contact {
     std::size_t a = 0, b = 0;  // the normal points from a into b
-    double overlap = 0, weight = 0;
+    double overlap = 0;        // the deepest pair's
+    double area = 0;           // the pairs' areas, summed
+    double weight = 0;         // the pairs' overlap^(3/2) times area, summed
     Vec3 point = Vec3::Zero(), normal = Vec3::Zero();
     std::vector<ParticlePair> pairs;
   };
