@@ -12,16 +12,24 @@ Eigen::Quaterniond rotation_from_angles(const Vec3& angles) {
                             Eigen::AngleAxisd(angles[0], Vec3::UnitX()));
 }
 
+Vec3 angular_velocity_from_rates(const Vec3& angles, const Vec3& rates) {
+  // R = Rz(c) Ry(b) Rx(a): each angle turns about its axis as carried by the turns after it.
+  const Eigen::AngleAxisd about_z(angles[2], Vec3::UnitZ());
+  const Eigen::AngleAxisd about_y(angles[1], Vec3::UnitY());
+  return rates[2] * Vec3::UnitZ() + rates[1] * (about_z * Vec3::UnitY()) +
+         rates[0] * (about_z * (about_y * Vec3::UnitX()));
+}
+
 ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
   const io::PrescribedConfig& p = body.prescribed;
   Vec3 position = body.position, angles = body.rotation;
-  Vec3 velocity = Vec3::Zero(), angular_velocity = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero(), rates = Vec3::Zero();
   switch (p.kind) {
     case io::PrescribedKind::kConstantVelocity:
       velocity = body.velocity;
-      angular_velocity = body.angular_velocity;
+      rates = body.angular_velocity;
       position += time * velocity;
-      angles += time * angular_velocity;
+      angles += time * rates;
       break;
     case io::PrescribedKind::kSinusoid: {
       const double omega = 2 * std::numbers::pi * p.frequency;
@@ -30,7 +38,7 @@ ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
       position += s * p.amplitude;
       angles += s * p.rotation_amplitude;
       velocity = c * p.amplitude;
-      angular_velocity = c * p.rotation_amplitude;
+      rates = c * p.rotation_amplitude;
       break;
     }
     case io::PrescribedKind::kTable: {
@@ -49,12 +57,13 @@ ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
         position = (1 - w) * a.position + w * b.position;
         angles = (1 - w) * a.rotation + w * b.rotation;
         velocity = (b.position - a.position) / span;
-        angular_velocity = (b.rotation - a.rotation) / span;
+        rates = (b.rotation - a.rotation) / span;
       }
       break;
     }
   }
-  return {position, rotation_from_angles(angles), velocity, angular_velocity};
+  return {position, rotation_from_angles(angles), velocity,
+          angular_velocity_from_rates(angles, rates)};
 }
 
 }  // namespace sluice

@@ -18,9 +18,12 @@ struct ShapePose {
 // Rotation by angles about the fixed x, then y, then z axes (radians).
 Eigen::Quaterniond rotation_from_angles(const Vec3& angles);
 
-// The pose at `time` of a body given by `body` (its motion must be prescribed). Angular
-// velocities are the time derivatives of the angles, exact for a rotation about one axis.
-// A table is interpolated linearly and held at its first and last rows.
+// The world angular velocity of rotation_from_angles(angles) while the angles change at `rates`.
+Vec3 angular_velocity_from_rates(const Vec3& angles, const Vec3& rates);
+
+// The pose at `time` of a body given by `body` (its motion must be prescribed): the angles
+// move with time, and the angular velocity is that of the turning they make. A table is
+// interpolated linearly and held at its first and last rows.
 ShapePose prescribed_pose(const io::BodyConfig& body, double time);
 
 }  // namespace sluice

@@ -132,6 +132,22 @@ TEST(PrescribedMotion, SinusoidStartsAtThePoseWithItsDerivative) {
   EXPECT_NEAR(p.velocity[0], 0.1 * omega * std::cos(omega * t + 0.3), 1e-14);
 }
 
+TEST(PrescribedMotion, AngularVelocityIsThatOfTheTurningAngles) {
+  // Three angles changing at once: the angular velocity must be the one that carries the
+  // orientation along, here checked against a central difference of the orientation.
+  const Vec3 angles(0.3, -0.5, 1.1), rates(0.7, 0.2, -0.4);
+  // omega = 2 q' q^-1, with q' from a central difference of the quaternion's components.
+  const double h = 1e-5;
+  Eigen::Quaterniond rate;
+  rate.coeffs() = (rotation_from_angles(angles + h * rates).coeffs() -
+                   rotation_from_angles(angles - h * rates).coeffs()) /
+                  (2 * h);
+  const Vec3 expected = 2 * (rate * rotation_from_angles(angles).conjugate()).vec();
+  const Vec3 omega = angular_velocity_from_rates(angles, rates);
+  for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(omega[axis], expected[axis], 1e-8) << axis;
+  EXPECT_GT((omega - rates).norm(), 0.1);  // not the rates themselves
+}
+
 TEST(PrescribedMotion, ConstantVelocityMovesAndTurns) {
   BodyConfig b;
   b.motion = BodyMotion::kPrescribed;
