@@ -104,56 +104,54 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
           l = m;
         });
         if (nearest >= reach2) continue;
-        {
-          const Vec3 d = points_b[l] - points_a[k];
-          const Vec3& n_l = surface_b.normals()[l];
-          // From a into b. Between flat faces, the mean of the two face normals (seed 000);
-          // against one flat face, that face's normal, so its plane gives the gap whatever the
-          // lateral offset of the pair; between two curved bodies, the line of centres.
-          const bool flat_a = bodies_[a].flat_faces, flat_b = bodies_[b].flat_faces;
-          const Vec3 n_c = flat_a && flat_b ? Vec3((n_k - n_l).normalized())
-                           : flat_b         ? Vec3(-n_l)
-                           : flat_a         ? n_k
-                                            : centres;
-          double overlap = -d.dot(n_c);  // minus the gap between the faces
-          // A sphere's surface is known exactly: against another sphere or a flat face, the
-          // overlap follows from its centre rather than from the nearest sampled points.
-          const ContactBody& A = bodies_[a];
-          const ContactBody& B = bodies_[b];
-          if (A.spherical && B.spherical) {
-            overlap =
-                A.contact_radius + B.contact_radius - (B.state.position - A.state.position).norm();
-          } else if (A.spherical && flat_b) {
-            overlap = A.contact_radius - (A.state.position - points_b[l]).dot(n_l);
-          } else if (B.spherical && flat_a) {
-            overlap = B.contact_radius - (B.state.position - points_a[k]).dot(n_k);
-          }
-          if (overlap <= 0) continue;
-          const std::uint64_t key = (a * n + b) * kDirections + direction_of(n_c);
-          auto [slot, fresh] = index.emplace(key, contacts.size());
-          if (fresh) {
-            contacts.emplace_back();
-            contacts.back().a = a;
-            contacts.back().b = b;
-          }
-          Contact& c = contacts[slot->second];
-          const double area = std::min(bodies_[a].surface_area[k], bodies_[b].surface_area[l]);
-          const double w = overlap * std::sqrt(overlap) * area;
-          // Where the pair's force acts: on a sphere, its true contact point; else half the
-          // overlap beyond a's particle. Not midway to b's particle: that point jumps as the
-          // nearest particle of b changes while the faces slide, and all of a face's pairs jump
-          // together, shaking the body at the lattice-crossing frequency.
-          const Vec3 midpoint =
-              A.spherical   ? Vec3(A.state.position + (A.contact_radius - 0.5 * overlap) * n_c)
-              : B.spherical ? Vec3(B.state.position - (B.contact_radius - 0.5 * overlap) * n_c)
-                            : Vec3(points_a[k] + 0.5 * overlap * n_c);
-          c.overlap = std::max(c.overlap, overlap);
-          c.area += area;
-          c.weight += w;
-          c.point += w * midpoint;
-          c.normal += w * n_c;
-          c.pairs.push_back({midpoint, overlap, area});
+        const Vec3 d = points_b[l] - points_a[k];
+        const Vec3& n_l = surface_b.normals()[l];
+        // From a into b. Between flat faces, the mean of the two face normals (seed 000);
+        // against one flat face, that face's normal, so its plane gives the gap whatever the
+        // lateral offset of the pair; between two curved bodies, the line of centres.
+        const bool flat_a = bodies_[a].flat_faces, flat_b = bodies_[b].flat_faces;
+        const Vec3 n_c = flat_a && flat_b ? Vec3((n_k - n_l).normalized())
+                         : flat_b         ? Vec3(-n_l)
+                         : flat_a         ? n_k
+                                          : centres;
+        double overlap = -d.dot(n_c);  // minus the gap between the faces
+        // A sphere's surface is known exactly: against another sphere or a flat face, the
+        // overlap follows from its centre rather than from the nearest sampled points.
+        const ContactBody& A = bodies_[a];
+        const ContactBody& B = bodies_[b];
+        if (A.spherical && B.spherical) {
+          overlap =
+              A.contact_radius + B.contact_radius - (B.state.position - A.state.position).norm();
+        } else if (A.spherical && flat_b) {
+          overlap = A.contact_radius - (A.state.position - points_b[l]).dot(n_l);
+        } else if (B.spherical && flat_a) {
+          overlap = B.contact_radius - (B.state.position - points_a[k]).dot(n_k);
         }
+        if (overlap <= 0) continue;
+        const std::uint64_t key = (a * n + b) * kDirections + direction_of(n_c);
+        auto [slot, fresh] = index.emplace(key, contacts.size());
+        if (fresh) {
+          contacts.emplace_back();
+          contacts.back().a = a;
+          contacts.back().b = b;
+        }
+        Contact& c = contacts[slot->second];
+        const double area = std::min(bodies_[a].surface_area[k], bodies_[b].surface_area[l]);
+        const double w = overlap * std::sqrt(overlap) * area;
+        // Where the pair's force acts: on a sphere, its true contact point; else half the
+        // overlap beyond a's particle. Not midway to b's particle: that point jumps as the
+        // nearest particle of b changes while the faces slide, and all of a face's pairs jump
+        // together, shaking the body at the lattice-crossing frequency.
+        const Vec3 acts_at =
+            A.spherical   ? Vec3(A.state.position + (A.contact_radius - 0.5 * overlap) * n_c)
+            : B.spherical ? Vec3(B.state.position - (B.contact_radius - 0.5 * overlap) * n_c)
+                          : Vec3(points_a[k] + 0.5 * overlap * n_c);
+        c.overlap = std::max(c.overlap, overlap);
+        c.area += area;
+        c.weight += w;
+        c.point += w * acts_at;
+        c.normal += w * n_c;
+        c.pairs.push_back({acts_at, overlap, area});
       }
     }
   }

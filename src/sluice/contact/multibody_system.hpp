@@ -87,7 +87,7 @@ class MultibodySystem {
 
  private:
   struct ParticlePair {
-    Vec3 point;      // midway between the two surface particles
+    Vec3 point;      // where its force acts
     double overlap;  // minus the gap between the faces
     double area;     // the smaller of the two particles' areas
   };
