@@ -51,7 +51,8 @@ def main():
         ax.scatter(points[walls, 0], points[walls, 2], s=0.3, c="0.75", lw=0)
         order = np.argsort(points[fluid, 1])  # draw the far side first
         shown = ax.scatter(points[fluid, 0][order], points[fluid, 2][order], s=0.8,
-                           c=speed[fluid][order], cmap="viridis", vmin=0, lw=0)
+                           c=speed[fluid][order], cmap="viridis", vmin=0,
+                           vmax=max(speed[fluid].max(initial=0), 0.1), lw=0)  # still water: 0-0.1
         ax.scatter(points[bodies, 0], points[bodies, 2], s=1.5, c="tab:red", lw=0)
         ax.set_aspect("equal")
         ax.set_title(f"t = {time:.2f} s", fontsize=9)
