@@ -138,8 +138,10 @@ std::vector<MultibodySystem::Contact> MultibodySystem::find_contacts() {
         Contact& c = contacts[slot->second];
         const double area = std::min(bodies_[a].surface_area[k], bodies_[b].surface_area[l]);
         const double w = overlap * std::sqrt(overlap) * area;
-        // Where the pair's force acts: on a sphere, its true contact point; else half the
-        // overlap beyond a's particle. Not midway to b's particle: that point jumps as the
+        // Where the pair's force acts: on a sphere, its true contact point, a radius less half
+        // the overlap from its centre (the sampled pairs lie around it, and their mean nearer
+        // the centre would make it roll on a smaller radius); else half the overlap beyond a's
+        // particle. Not midway to b's particle: that point jumps as the
         // nearest particle of b changes while the faces slide, and all of a face's pairs jump
         // together, shaking the body at the lattice-crossing frequency.
         const Vec3 acts_at =
@@ -174,18 +176,14 @@ void MultibodySystem::apply_contacts(double dt) {
     const ContactBody& B = bodies_[c.b];
     const ContactPair& law = pair(c.a, c.b);
     // On a curved body the force acts on the line through its centre along the normal (a
-    // sphere's contact force passes through its centre), for a sphere at its true contact
-    // point, a radius less half the overlap from the centre (the sampled pairs lie around it
-    // and their mean is nearer the centre, which would make it roll on a smaller radius); on a
-    // flat face, where it is applied. The relative velocity is taken where the force acts: a
-    // rolling sphere's surface at a sampled point beside the true contact would add a normal
-    // velocity of omega times the offset and make the dashpot push and pull.
+    // sphere's contact force passes through its centre; its pairs already act at its true
+    // contact point, see find_contacts); on a flat face, where it is applied. The relative
+    // velocity is taken where the force acts: a rolling sphere's surface at a sampled point
+    // beside the true contact would add a normal velocity of omega times the offset and make
+    // the dashpot push and pull.
     auto lever = [&](const ContactBody& body, const Vec3& point) -> Vec3 {
       const Vec3 arm = point - body.state.position;
-      if (body.flat_faces) return arm;
-      const double along = arm.dot(c.normal);
-      if (!body.spherical) return along * c.normal;
-      return std::copysign(body.contact_radius - 0.5 * c.overlap, along) * c.normal;
+      return body.flat_faces ? arm : Vec3(arm.dot(c.normal) * c.normal);
     };
     auto relative_velocity = [&](const Vec3& point) -> Vec3 {
       auto velocity = [&](const ContactBody& body) {

@@ -183,8 +183,8 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
     names.push_back(fmt::format("body '{}'", c.name));
   }
   // Walls as contact bodies, when there is a body to touch them.
-  const std::vector<io::WallConfig> no_walls;
-  for (const auto& wall : configs_.empty() ? no_walls : config.walls) {
+  for (const auto& wall : config.walls) {
+    if (configs_.empty()) break;
     if (wall.shape == io::WallShape::kTank) {
       for (auto& side : make_tank_walls(wall.box.min, wall.box.max, wall.open_sides, dx,
                                         wall.material, dimension)) {
