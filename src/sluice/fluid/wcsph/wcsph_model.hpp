@@ -63,6 +63,11 @@ class WcsphModel final : public FluidModel<D> {
     }));
   }
 
+  // The model's own fields, for tests that check the pair loops against a reference.
+  FieldHandle<Vec<D>> acceleration_field() const { return acceleration_; }
+  FieldHandle<Real> density_rate_field() const { return density_rate_; }
+  FieldHandle<Vec<D>> wall_velocity_field() const { return wall_velocity_; }
+
   double next_time_step(const SimulationState<D>& s) const override {
     const Real h = kernel_.h;
     double dt = p_.cfl * h / (eos_.c0 + max_speed_);
