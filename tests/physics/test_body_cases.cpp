@@ -303,8 +303,8 @@ TEST(CaseFloatingBlock, Floats) {
   });
   const double draft = sum / samples;
   std::printf(
-      "B2 (case): block lowest bottom %.3g mm above the floor, mean draft %.3g mm "
-      "(Archimedes %.3g)\n",
+      "B2 (case): block lowest bottom %.3g mm above the floor, mean draft %.4g mm "
+      "(Archimedes %.4g)\n",
       1e3 * lowest, 1e3 * draft, 1e3 * archimedes);
   EXPECT_GT(lowest, 0.25 * water);
   EXPECT_NEAR(draft, archimedes, 0.1 * archimedes);
