@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "sluice/contact/contact_body_builder.hpp"
+#include "sluice/contact/multibody_system.hpp"
 
 namespace {
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "sluice/contact/contact_body_builder.hpp"
+#include "sluice/contact/multibody_system.hpp"
 
 namespace sluice::testing {
 

@@ -34,7 +34,7 @@ TEST(DamBreak2D, SurgeFrontMatchesExperiment) {
   Probes<2> probe({front}, "", sim.model().interaction_radius());
 
   std::vector<double> times{0}, fronts{probe.measure(sim.state())[0]};
-  testing::run_until(sim, 0.72, [&](const SimulationState<2>& s) {
+  testing::run_until(sim, 0.72, [&](const ParticleState<2>& s) {
     times.push_back(s.time);
     fronts.push_back(probe.measure(s)[0]);
   });

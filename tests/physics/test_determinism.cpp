@@ -12,7 +12,7 @@ namespace {
 ParticleSet<2> run_with_threads(int threads) {
   omp_set_num_threads(threads);
   Simulation<2> sim(testing::load_case("dam_break_2d.yaml", {"spacing=0.05"}));
-  testing::run_until(sim, 0.05, [](const SimulationState<2>&) {});
+  testing::run_until(sim, 0.05, [](const ParticleState<2>&) {});
   return sim.state().particles;
 }
 
@@ -36,7 +36,7 @@ std::unique_ptr<Simulation<2>> bodies_with_threads(int threads) {
   omp_set_num_threads(threads);
   auto sim =
       std::make_unique<Simulation<2>>(testing::load_case("subcycling_2d.yaml", {"spacing=0.02"}));
-  testing::run_until(*sim, 0.45, [](const SimulationState<2>&) {});
+  testing::run_until(*sim, 0.45, [](const ParticleState<2>&) {});
   return sim;
 }
 

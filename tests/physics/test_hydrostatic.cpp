@@ -15,7 +15,7 @@ TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
   Simulation<2> sim(config);
   const double g = 9.81, rho0 = config.fluid.density, depth = 1.0;
   double worst_speed = 0;
-  testing::run_until(sim, 2.0, [&](const SimulationState<2>& s) {
+  testing::run_until(sim, 2.0, [&](const ParticleState<2>& s) {
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
       if (s.particles.is_fluid(i))
         worst_speed = std::max(worst_speed, s.particles.velocity[i].norm());

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "sluice/contact/multibody_system.hpp"
+#include "sluice/contact/contact_body.hpp"
 #include "sluice/geometry/body_sampling.hpp"
 #include "sluice/rigid/mass_properties.hpp"
 

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <numbers>
 #include <stdexcept>
 
@@ -46,28 +45,25 @@ double hertz_damping_for_restitution(double restitution) {
     throw std::invalid_argument("restitution must lie in (0, 1]");
   }
   if (restitution == 1) return 0;
-  // The bisection integrates the oscillator some 60 times: remember each answer, since a run
-  // meets the same few restitutions over and over.
-  static std::mutex guard;
-  static std::map<double, double> known;
-  {
-    const std::lock_guard<std::mutex> lock(guard);
-    if (const auto found = known.find(restitution); found != known.end()) return found->second;
-  }
   double low = 0, high = 1;
   while (rebound_speed(high) > restitution) high *= 2;
   for (int iteration = 0; iteration < 60; ++iteration) {
     const double mid = 0.5 * (low + high);
     (rebound_speed(mid) > restitution ? low : high) = mid;
   }
-  const double gamma = 0.5 * (low + high);
-  const std::lock_guard<std::mutex> lock(guard);
-  known.emplace(restitution, gamma);
-  return gamma;
+  return 0.5 * (low + high);
+}
+
+double HertzDampingTable::gamma(double restitution) {
+  if (const auto found = known_.find(restitution); found != known_.end()) return found->second;
+  const double value = hertz_damping_for_restitution(restitution);
+  known_.emplace(restitution, value);
+  return value;
 }
 
 ContactPair make_contact_pair(const ContactMaterial& a, double mass_a, double radius_a,
-                              const ContactMaterial& b, double mass_b, double radius_b) {
+                              const ContactMaterial& b, double mass_b, double radius_b,
+                              HertzDampingTable& damping) {
   ContactPair p;
   p.effective_mass = 1 / (inverse_or_zero(mass_a) + inverse_or_zero(mass_b));
   p.effective_radius = 1 / (inverse_or_zero(radius_a) + inverse_or_zero(radius_b));
@@ -78,8 +74,8 @@ ContactPair make_contact_pair(const ContactMaterial& a, double mass_a, double ra
   p.restitution = std::min(a.restitution, b.restitution);
   p.friction = std::min(a.friction, b.friction);
   p.normal_stiffness = 4.0 / 3.0 * p.effective_young * std::sqrt(p.effective_radius);
-  p.normal_damping = hertz_damping_for_restitution(p.restitution) *
-                     std::sqrt(p.effective_mass * p.normal_stiffness);
+  p.normal_damping =
+      damping.gamma(p.restitution) * std::sqrt(p.effective_mass * p.normal_stiffness);
   const double log_e = std::log(p.restitution);
   const double beta = log_e / std::sqrt(log_e * log_e + std::numbers::pi * std::numbers::pi);
   p.tangential_damping_ratio = 2 * std::sqrt(5.0 / 6.0) * std::abs(beta);

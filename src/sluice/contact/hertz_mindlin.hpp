@@ -3,16 +3,12 @@
 // displacement with a dashpot, capped by Coulomb friction.
 #pragma once
 
+#include <map>
+
+#include "sluice/contact/contact_material.hpp"
 #include "sluice/core/types.hpp"
 
 namespace sluice {
-
-struct ContactMaterial {
-  double young = 1e7;        // E [Pa]
-  double poisson = 0.3;      // nu
-  double restitution = 0.5;  // e in (0, 1]
-  double friction = 0.5;     // Coulomb mu >= 0
-};
 
 // Everything the law needs for one pair of bodies. Combination rule (docs/contact.md):
 // 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, 1/m* and 1/R*
@@ -29,14 +25,25 @@ struct ContactPair {
   double tangential_damping_ratio = 0;  // 2 sqrt(5/6) |beta| (Tsuji et al. 1992)
 };
 
-// mass or radius <= 0 or infinite means "a wall" (infinite).
-ContactPair make_contact_pair(const ContactMaterial& a, double mass_a, double radius_a,
-                              const ContactMaterial& b, double mass_b, double radius_b);
-
 // The dimensionless damping gamma for which x'' = -x^(3/2) - gamma x^(1/4) x', x(0) = 0,
 // x'(0) = 1 leaves contact (the force returns to zero) with speed e: found by bisection on a
 // fine integration, so the law reproduces e exactly rather than by a fitted formula.
 double hertz_damping_for_restitution(double restitution);
+
+// hertz_damping_for_restitution, remembered: the bisection integrates the oscillator some 60
+// times, and a run meets the same few restitutions over and over. One per contact solver.
+class HertzDampingTable {
+ public:
+  double gamma(double restitution);
+
+ private:
+  std::map<double, double> known_;
+};
+
+// mass or radius <= 0 or infinite means "a wall" (infinite).
+ContactPair make_contact_pair(const ContactMaterial& a, double mass_a, double radius_a,
+                              const ContactMaterial& b, double mass_b, double radius_b,
+                              HertzDampingTable& damping);
 
 struct ContactForce {
   Vec3 force = Vec3::Zero();  // on the first body, at the contact point

@@ -59,7 +59,7 @@ void for_each_product(const std::array<std::vector<AxisCoordinate>, D>& axes, Fn
 }  // namespace
 
 template <int D>
-std::vector<Vec<D>> sample_box_volume(const io::AxisBox& box, Real dx) {
+std::vector<Vec<D>> sample_box_volume(const AxisBox& box, Real dx) {
   std::vector<Vec<D>> out;
   std::array<std::vector<Real>, D> coords;
   constexpr auto axes = axes3<D>();
@@ -79,7 +79,7 @@ std::vector<Vec<D>> sample_box_volume(const io::AxisBox& box, Real dx) {
 }
 
 template <int D>
-std::vector<Vec<D>> sample_tank_walls(const io::AxisBox& inside,
+std::vector<Vec<D>> sample_tank_walls(const AxisBox& inside,
                                       const std::vector<std::string>& open_sides, Real dx,
                                       int layers) {
   constexpr auto axes = axes3<D>();
@@ -105,7 +105,7 @@ std::vector<Vec<D>> sample_tank_walls(const io::AxisBox& inside,
 }
 
 template <int D>
-std::vector<Vec<D>> sample_solid_box(const io::AxisBox& box, Real dx, int layers) {
+std::vector<Vec<D>> sample_solid_box(const AxisBox& box, Real dx, int layers) {
   constexpr auto axes = axes3<D>();
   std::vector<Vec<D>> out;
   for (const Vec<D>& p : sample_box_volume<D>(box, dx)) {
@@ -120,8 +120,8 @@ std::vector<Vec<D>> sample_solid_box(const io::AxisBox& box, Real dx, int layers
 
 template <int D>
 std::vector<Vec<D>> sample_plane_layers(const Vec3& point, const Vec3& normal,
-                                        const io::AxisBox& bounds, Real dx, int layers) {
-  io::AxisBox grown = bounds;
+                                        const AxisBox& bounds, Real dx, int layers) {
+  AxisBox grown = bounds;
   for (int a = 0; a < 3; ++a) {
     grown.min[a] -= layers * dx;
     grown.max[a] += layers * dx;
@@ -137,12 +137,12 @@ std::vector<Vec<D>> sample_plane_layers(const Vec3& point, const Vec3& normal,
 }
 
 #define SLUICE_INSTANTIATE_SAMPLING(D)                                                           \
-  template std::vector<Vec<D>> sample_box_volume<D>(const io::AxisBox&, Real);                   \
-  template std::vector<Vec<D>> sample_tank_walls<D>(const io::AxisBox&,                          \
+  template std::vector<Vec<D>> sample_box_volume<D>(const AxisBox&, Real);                       \
+  template std::vector<Vec<D>> sample_tank_walls<D>(const AxisBox&,                              \
                                                     const std::vector<std::string>&, Real, int); \
-  template std::vector<Vec<D>> sample_solid_box<D>(const io::AxisBox&, Real, int);               \
-  template std::vector<Vec<D>> sample_plane_layers<D>(const Vec3&, const Vec3&,                  \
-                                                      const io::AxisBox&, Real, int);
+  template std::vector<Vec<D>> sample_solid_box<D>(const AxisBox&, Real, int);                   \
+  template std::vector<Vec<D>> sample_plane_layers<D>(const Vec3&, const Vec3&, const AxisBox&,  \
+                                                      Real, int);
 SLUICE_INSTANTIATE_SAMPLING(2)
 SLUICE_INSTANTIATE_SAMPLING(3)
 #undef SLUICE_INSTANTIATE_SAMPLING

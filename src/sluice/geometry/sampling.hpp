@@ -2,31 +2,32 @@
 // layers of boundary particles behind tank sides, boxes and planes.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "sluice/core/types.hpp"
-#include "sluice/io/case_config.hpp"
+#include "sluice/geometry/axis_box.hpp"
 
 namespace sluice {
 
 // Lattice points min + (k + 1/2) dx inside the box.
 template <int D>
-std::vector<Vec<D>> sample_box_volume(const io::AxisBox& box, Real dx);
+std::vector<Vec<D>> sample_box_volume(const AxisBox& box, Real dx);
 
 // `layers` layers of particles behind the closed sides of a tank (the box is its inside),
 // corners included. The walls' faces are the box faces; particles sit dx/2, 3dx/2, ... behind.
 template <int D>
-std::vector<Vec<D>> sample_tank_walls(const io::AxisBox& inside,
+std::vector<Vec<D>> sample_tank_walls(const AxisBox& inside,
                                       const std::vector<std::string>& open_sides, Real dx,
                                       int layers);
 
 // A solid box: the lattice points inside it within `layers` spacings of its surface.
 template <int D>
-std::vector<Vec<D>> sample_solid_box(const io::AxisBox& box, Real dx, int layers);
+std::vector<Vec<D>> sample_solid_box(const AxisBox& box, Real dx, int layers);
 
 // `layers` layers behind a plane (normal points into the fluid), clipped to `bounds`.
 template <int D>
 std::vector<Vec<D>> sample_plane_layers(const Vec3& point, const Vec3& normal,
-                                        const io::AxisBox& bounds, Real dx, int layers);
+                                        const AxisBox& bounds, Real dx, int layers);
 
 }  // namespace sluice

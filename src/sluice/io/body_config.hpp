@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sluice/contact/hertz_mindlin.hpp"
+#include "sluice/contact/contact_material.hpp"
 #include "sluice/core/types.hpp"
 #include "sluice/geometry/triangle_mesh.hpp"
 

@@ -10,22 +10,11 @@
 #include <vector>
 
 #include "sluice/core/types.hpp"
+#include "sluice/geometry/axis_box.hpp"
 #include "sluice/io/body_config.hpp"
 #include "sluice/io/yaml_reader.hpp"
 
 namespace sluice::io {
-
-struct AxisBox {
-  Vec3 min = Vec3::Zero();
-  Vec3 max = Vec3::Zero();
-  bool contains(const Vec3& p, int dimension) const {
-    for (int a = 0; a < 3; ++a) {
-      if (dimension == 2 && a == 1) continue;
-      if (p[a] < min[a] || p[a] > max[a]) return false;
-    }
-    return true;
-  }
-};
 
 struct FluidBlockConfig {
   std::string name;

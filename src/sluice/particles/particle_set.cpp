@@ -5,7 +5,7 @@
 namespace sluice {
 
 namespace {
-// Gathers `field` through `order` using `scratch` (kept between calls to avoid allocations).
+// Gathers `field` through `order`.
 template <class T>
 void permute(std::vector<T>& field, const std::vector<std::uint32_t>& order) {
   std::vector<T> sorted(field.size());
@@ -23,8 +23,9 @@ void ParticleSet<D>::reorder(const std::vector<std::uint32_t>& order) {
   permute(mass, order);
   permute(kind, order);
   permute(body_point, order);
-  for (auto& f : scalar_fields_) permute(f, order);
-  for (auto& f : vector_fields_) permute(f, order);
+  for (auto& f : int_fields_) permute(f.values, order);
+  for (auto& f : scalar_fields_) permute(f.values, order);
+  for (auto& f : vector_fields_) permute(f.values, order);
 }
 
 template class ParticleSet<2>;

@@ -1,19 +1,24 @@
 // Particle storage as a typed structure of arrays: one contiguous array per field. The
-// engine's own fields are members; a model adds fields of its own through handles, so hot
-// loops never look a field up by name.
+// engine's own fields are members; a model adds fields of its own (integer, scalar or vector,
+// each with a name and a unit) through handles, so hot loops never look a field up by name.
+// Output, the divergence guard and checkpoints see every field through for_each_field.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "sluice/core/types.hpp"
+#include "sluice/particles/field_label.hpp"
 
 namespace sluice {
 
-// Values of the `kind` array in the output; documented in docs/output.md.
-// Body particles are moving walls: the fluid treats them as walls.
-enum class ParticleKind : std::int32_t { kFluid = 0, kWall = 1, kBody = 2 };
+// Values of the `kind` array in the output; documented in docs/output.md. Walls and bodies
+// are boundaries the fluid sees; a dummy particle fills out a wall's support without taking
+// part in the model's equations (MPS's outer wall layers).
+enum class ParticleKind : std::int32_t { kFluid = 0, kWall = 1, kBody = 2, kDummy = 3 };
 
 template <class T>
 struct FieldHandle {
@@ -29,7 +34,7 @@ class ParticleSet {
   std::vector<Real> pressure;
   std::vector<Real> mass;
   std::vector<ParticleKind> kind;
-  std::vector<std::int32_t> body_point;  // body particles: their index in RigidBodies::points()
+  std::vector<std::int32_t> body_point;  // body particles: their index among the body points
 
   std::size_t size() const { return position.size(); }
   bool is_fluid(std::size_t i) const { return kind[i] == ParticleKind::kFluid; }
@@ -42,32 +47,98 @@ class ParticleSet {
     mass.push_back(m);
     kind.push_back(k);
     body_point.push_back(-1);
-    for (auto& f : scalar_fields_) f.push_back(0);
-    for (auto& f : vector_fields_) f.push_back(Vec<D>::Zero());
+    for (auto& f : int_fields_) f.values.push_back(0);
+    for (auto& f : scalar_fields_) f.values.push_back(0);
+    for (auto& f : vector_fields_) f.values.push_back(Vec<D>::Zero());
   }
 
   // A model's own per-particle field, zero-initialised and kept in step with reordering.
-  FieldHandle<Real> add_scalar_field() {
-    scalar_fields_.emplace_back(size(), Real(0));
-    return {scalar_fields_.size() - 1};
+  FieldHandle<std::int32_t> add_int_field(FieldLabel label) { return add(int_fields_, label); }
+  FieldHandle<Real> add_scalar_field(FieldLabel label) { return add(scalar_fields_, label); }
+  FieldHandle<Vec<D>> add_vector_field(FieldLabel label) { return add(vector_fields_, label); }
+
+  template <class T>
+  std::vector<T>& operator[](FieldHandle<T> h) {
+    return fields<T>()[h.index].values;
   }
-  FieldHandle<Vec<D>> add_vector_field() {
-    vector_fields_.emplace_back(size(), Vec<D>::Zero());
-    return {vector_fields_.size() - 1};
+  template <class T>
+  const std::vector<T>& operator[](FieldHandle<T> h) const {
+    return const_cast<ParticleSet&>(*this).fields<T>()[h.index].values;
   }
-  std::vector<Real>& operator[](FieldHandle<Real> h) { return scalar_fields_[h.index]; }
-  const std::vector<Real>& operator[](FieldHandle<Real> h) const { return scalar_fields_[h.index]; }
-  std::vector<Vec<D>>& operator[](FieldHandle<Vec<D>> h) { return vector_fields_[h.index]; }
-  const std::vector<Vec<D>>& operator[](FieldHandle<Vec<D>> h) const {
-    return vector_fields_[h.index];
+
+  // visit(label, values) for every field, the engine's first, in a fixed order; `values` is a
+  // std::vector of ParticleKind, std::int32_t, Real or Vec<D>.
+  template <class Visit>
+  void for_each_field(Visit&& visit) const {
+    visit_fields(*this, visit);
+  }
+
+  // Copies from `from` (a set with the same fields: a copy of this one) the fields for which
+  // keep(label) holds, and empties the others.
+  template <class Keep>
+  void assign_fields(const ParticleSet& from, Keep&& keep) {
+    std::vector<const void*> sources;
+    visit_fields(from, [&](const FieldLabel&, const auto& values) { sources.push_back(&values); });
+    std::size_t k = 0;
+    visit_fields(*this, [&](const FieldLabel& label, auto& values) {
+      const auto& source = *static_cast<const std::decay_t<decltype(values)>*>(sources.at(k++));
+      if (keep(label)) {
+        values = source;
+      } else {
+        values.clear();
+      }
+    });
   }
 
   // Applies a permutation to every field: after it, particle k is the one that was order[k].
   void reorder(const std::vector<std::uint32_t>& order);
 
  private:
-  std::vector<std::vector<Real>> scalar_fields_;
-  std::vector<std::vector<Vec<D>>> vector_fields_;
+  template <class Self, class Visit>
+  static void visit_fields(Self& self, Visit&& visit) {
+    visit(FieldLabel{"position", "m", false}, self.position);
+    visit(FieldLabel{"velocity", "m/s", true}, self.velocity);
+    visit(FieldLabel{"pressure", "Pa", true}, self.pressure);
+    visit(FieldLabel{"density", "kg/m^3", true}, self.density);
+    visit(FieldLabel{"mass", "kg", false}, self.mass);
+    visit(FieldLabel{"kind", "1", true}, self.kind);
+    visit(FieldLabel{"body_point", "1", false}, self.body_point);
+    for (auto& f : self.int_fields_) visit(f.label, f.values);
+    for (auto& f : self.scalar_fields_) visit(f.label, f.values);
+    for (auto& f : self.vector_fields_) visit(f.label, f.values);
+  }
+
+  template <class T>
+  struct Field {
+    FieldLabel label;
+    std::vector<T> values;
+  };
+
+  template <class T>
+  FieldHandle<T> add(std::vector<Field<T>>& fields, FieldLabel label) {
+    T zero;
+    if constexpr (std::is_arithmetic_v<T>) {
+      zero = 0;
+    } else {
+      zero = T::Zero();
+    }
+    fields.push_back({std::move(label), std::vector<T>(size(), zero)});
+    return {fields.size() - 1};
+  }
+  template <class T>
+  std::vector<Field<T>>& fields() {
+    if constexpr (std::is_same_v<T, std::int32_t>) {
+      return int_fields_;
+    } else if constexpr (std::is_same_v<T, Real>) {
+      return scalar_fields_;
+    } else {
+      return vector_fields_;
+    }
+  }
+
+  std::vector<Field<std::int32_t>> int_fields_;
+  std::vector<Field<Real>> scalar_fields_;
+  std::vector<Field<Vec<D>>> vector_fields_;
 };
 
 }  // namespace sluice

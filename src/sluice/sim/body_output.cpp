@@ -45,7 +45,7 @@ void BodyOutput::record(double time, const RigidBodies& bodies, const FluidEnerg
                        ff[0], ff[1],         ff[2],         fm[0],         fm[1], fm[2], cf[0],
                        cf[1], cf[2],         cm[0],         cm[1],         cm[2]});
   }
-  const MultibodyEnergy e = system.energy();
+  const RigidSystemEnergy e = system.energy();
   energy_csv_->row({time, e.kinetic, e.potential, e.elastic, fluid.kinetic, fluid.potential,
                     e.total() + fluid.kinetic + fluid.potential,
                     static_cast<double>(bodies.substeps())});

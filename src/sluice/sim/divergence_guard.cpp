@@ -6,12 +6,13 @@
 #include <limits>
 
 #include "sluice/exec/policy.hpp"
+#include "sluice/sim/frame_output.hpp"
 
 namespace sluice {
 
 namespace {
 template <int D>
-const char* problem_of(const SimulationState<D>& s, std::size_t i) {
+const char* problem_of(const ParticleState<D>& s, std::size_t i) {
   const auto& ps = s.particles;
   if (!ps.position[i].allFinite()) return "its position is not finite";
   if (!ps.velocity[i].allFinite()) return "its velocity is not finite";
@@ -23,7 +24,7 @@ const char* problem_of(const SimulationState<D>& s, std::size_t i) {
   return nullptr;
 }
 
-const char* problem_of(const RigidBody& body, const io::AxisBox& escape_box, int dimension) {
+const char* problem_of(const RigidBody& body, const AxisBox& escape_box, int dimension) {
   if (!body.position.allFinite() || !body.velocity.allFinite() ||
       !body.orientation.coeffs().allFinite() || !body.angular_momentum.allFinite()) {
     return "its state is not finite";
@@ -33,14 +34,14 @@ const char* problem_of(const RigidBody& body, const io::AxisBox& escape_box, int
 }
 
 template <int D>
-std::string where(const SimulationState<D>& s, const std::string& what, const Vec3& x) {
+std::string where(const ParticleState<D>& s, const std::string& what, const Vec3& x) {
   return fmt::format("the run diverged at step {}, t = {:.6g} s: {} at ({:.4g}, {:.4g}, {:.4g})",
                      s.step, s.time, what, x[0], x[1], x[2]);
 }
 }  // namespace
 
 template <int D>
-std::optional<std::string> DivergenceGuard<D>::check(const SimulationState<D>& s,
+std::optional<std::string> DivergenceGuard<D>::check(const ParticleState<D>& s,
                                                      const RigidBodies& bodies) const {
   // A body first: when one breaks, its points break with it, and its name says more.
   for (std::size_t b = 0; b < bodies.count(); ++b) {
@@ -60,15 +61,14 @@ std::optional<std::string> DivergenceGuard<D>::check(const SimulationState<D>& s
 }
 
 template <int D>
-void DivergenceGuard<D>::remember(const SimulationState<D>& s) {
-  const auto& ps = s.particles;
-  last_good_.position = ps.position;
-  last_good_.velocity = ps.velocity;
-  last_good_.density = ps.density;
-  last_good_.pressure = ps.pressure;
-  last_good_.mass.clear();
-  last_good_.kind = ps.kind;
-  last_good_.body_point = ps.body_point;
+void DivergenceGuard<D>::remember(const ParticleState<D>& s) {
+  // What a frame shows, the model's fields marked for output included; the first time, a
+  // whole copy that gives the set its fields.
+  if (!holds_fields_) {
+    last_good_ = s.particles;
+    holds_fields_ = true;
+  }
+  last_good_.assign_fields(s.particles, FrameOutput::shows);
   last_good_time_ = s.time;
 }
 

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "sluice/fluid/particle_state.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
-#include "sluice/sim/state.hpp"
 
 namespace sluice {
 
@@ -16,10 +16,10 @@ template <int D>
 class DivergenceGuard {
  public:
   // The problem with the state, or nothing when it is sound.
-  std::optional<std::string> check(const SimulationState<D>& s, const RigidBodies& bodies) const;
+  std::optional<std::string> check(const ParticleState<D>& s, const RigidBodies& bodies) const;
 
   // Remembers `s` as the last good state.
-  void remember(const SimulationState<D>& s);
+  void remember(const ParticleState<D>& s);
 
   const ParticleSet<D>& last_good() const { return last_good_; }
   double last_good_time() const { return last_good_time_; }
@@ -27,6 +27,7 @@ class DivergenceGuard {
  private:
   ParticleSet<D> last_good_;
   double last_good_time_ = 0;
+  bool holds_fields_ = false;
 };
 
 }  // namespace sluice

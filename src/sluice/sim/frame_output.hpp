@@ -1,5 +1,6 @@
 // Writes the particles as a VTK frame (OUT/frames/frame_NNNNNN.vtp) and lists it in the
-// ParaView series OUT/CASE.pvd. Arrays: velocity, pressure, density, kind (docs/output.md).
+// ParaView series OUT/CASE.pvd. Arrays: the fields marked for output (velocity, pressure,
+// density, kind and any a model adds; docs/output.md), and `body` in a case with bodies.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +22,10 @@ class FrameOutput {
   template <int D>
   void write(const ParticleSet<D>& particles, double time,
              const std::vector<std::int32_t>& body_of_point = {});
+
+  // Whether a frame needs this field: those marked for output, the positions and the body
+  // points (for the `body` array).
+  static bool shows(const FieldLabel& label);
 
   int frames_written() const { return frame_count_; }
   const std::string& series_path() const { return series_.path(); }

@@ -35,9 +35,9 @@ std::vector<Vec<D>> sample_walls(const io::CaseConfig& config, int layers) {
 }  // namespace
 
 template <int D>
-SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_radius,
-                               const RigidBodies& bodies) {
-  SimulationState<D> s;
+ParticleState<D> build_state(const io::CaseConfig& config, Real interaction_radius,
+                             const RigidBodies& bodies) {
+  ParticleState<D> s;
   const Real dx = config.spacing;
   s.spacing = dx;
   s.gravity = from_3d<D>(config.gravity);
@@ -110,7 +110,7 @@ SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_ra
   return s;
 }
 
-template SimulationState<2> build_state<2>(const io::CaseConfig&, Real, const RigidBodies&);
-template SimulationState<3> build_state<3>(const io::CaseConfig&, Real, const RigidBodies&);
+template ParticleState<2> build_state<2>(const io::CaseConfig&, Real, const RigidBodies&);
+template ParticleState<3> build_state<3>(const io::CaseConfig&, Real, const RigidBodies&);
 
 }  // namespace sluice

@@ -2,9 +2,9 @@
 // walls as layers of boundary particles thick enough to fill a fluid particle's support.
 #pragma once
 
+#include "sluice/fluid/particle_state.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
-#include "sluice/sim/state.hpp"
 
 namespace sluice {
 
@@ -12,8 +12,8 @@ namespace sluice {
 // the bodies' points. Throws InputError when the case has fluid blocks but no fluid particle
 // remains (blocks too small, or entirely inside walls or bodies).
 template <int D>
-SimulationState<D> build_state(const io::CaseConfig& config, Real interaction_radius,
-                               const RigidBodies& bodies);
+ParticleState<D> build_state(const io::CaseConfig& config, Real interaction_radius,
+                             const RigidBodies& bodies);
 
 // Number of boundary-particle layers needed behind a wall for a given interaction radius.
 inline int wall_layers(Real interaction_radius, Real dx) {

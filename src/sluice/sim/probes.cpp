@@ -30,7 +30,7 @@ Probes<D>::Probes(const std::vector<io::ProbeConfig>& probes, const std::string&
 }
 
 template <int D>
-std::vector<double> Probes<D>::measure(const SimulationState<D>& s) const {
+std::vector<double> Probes<D>::measure(const ParticleState<D>& s) const {
   std::vector<double> row;
   for (const auto& p : probes_) {
     switch (p.kind) {
@@ -49,7 +49,7 @@ std::vector<double> Probes<D>::measure(const SimulationState<D>& s) const {
 }
 
 template <int D>
-void Probes<D>::record(const SimulationState<D>& s) {
+void Probes<D>::record(const ParticleState<D>& s) {
   if (!csv_) return;
   std::vector<double> row{s.time};
   for (double v : measure(s)) row.push_back(v);
@@ -59,7 +59,7 @@ void Probes<D>::record(const SimulationState<D>& s) {
 // Shepard average of the fluid's pressure with a Wendland weight over the model's support;
 // zero where no fluid is within reach.
 template <int D>
-Real Probes<D>::pressure_at(const SimulationState<D>& s, const Vec<D>& x) const {
+Real Probes<D>::pressure_at(const ParticleState<D>& s, const Vec<D>& x) const {
   const WendlandC2<D> kernel(radius_ / 2);
   const auto& ps = s.particles;
   Real sum_w = 0, sum_pw = 0;
@@ -76,7 +76,7 @@ Real Probes<D>::pressure_at(const SimulationState<D>& s, const Vec<D>& x) const 
 // Height above the domain floor of the highest point of the gauge line where the fluid's
 // kernel-summed volume fraction is at least one half (isolated drops do not count).
 template <int D>
-Real Probes<D>::water_height_at(const SimulationState<D>& s, const Vec3& gauge) const {
+Real Probes<D>::water_height_at(const ParticleState<D>& s, const Vec3& gauge) const {
   const WendlandC2<D> kernel(radius_ / 2);
   const auto& ps = s.particles;
   const Real floor = s.domain.min[2];
@@ -97,7 +97,7 @@ Real Probes<D>::water_height_at(const SimulationState<D>& s, const Vec3& gauge) 
 
 // Largest coordinate of the fluid along the axis, to the edge of the particle (+ dx/2).
 template <int D>
-Real Probes<D>::surge_front(const SimulationState<D>& s, int axis3) const {
+Real Probes<D>::surge_front(const ParticleState<D>& s, int axis3) const {
   const int axis = (D == 2 && axis3 == 0) ? 0 : axis3;
   const auto& ps = s.particles;
   const Real front = exec::Default::max_of(

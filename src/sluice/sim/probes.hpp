@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "sluice/fluid/particle_state.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/io/csv_writer.hpp"
-#include "sluice/sim/state.hpp"
 
 namespace sluice {
 
@@ -21,14 +21,14 @@ class Probes {
 
   bool empty() const { return probes_.empty(); }
   // Appends one row for the state's time.
-  void record(const SimulationState<D>& s);
+  void record(const ParticleState<D>& s);
   // The values of one row, in the order of the case's probes (used by tests too).
-  std::vector<double> measure(const SimulationState<D>& s) const;
+  std::vector<double> measure(const ParticleState<D>& s) const;
 
  private:
-  Real pressure_at(const SimulationState<D>& s, const Vec<D>& x) const;
-  Real water_height_at(const SimulationState<D>& s, const Vec3& gauge) const;
-  Real surge_front(const SimulationState<D>& s, int axis3) const;
+  Real pressure_at(const ParticleState<D>& s, const Vec<D>& x) const;
+  Real water_height_at(const ParticleState<D>& s, const Vec3& gauge) const;
+  Real surge_front(const ParticleState<D>& s, int axis3) const;
 
   std::vector<io::ProbeConfig> probes_;
   Real radius_;

@@ -94,7 +94,7 @@ ShapeSample sample_shape(const io::BodyConfig& b, double dx, int layers, int dim
 
 // The surface particle of `body` nearest to `local` (in the body's frame) and its distance;
 // the index is the particle count when the body has none.
-std::pair<std::size_t, double> nearest_surface_particle(const ContactBody& body,
+std::pair<std::size_t, double> nearest_surface_particle(const ContactShape& body,
                                                         const Vec3& local) {
   double nearest = std::numeric_limits<double>::infinity();
   std::size_t closest = body.surface_position.size();
@@ -216,13 +216,13 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
                      fmt::format("bodies[{}].{}", b, key), problem);
   };
   const double tolerance = 1e-9 * (config.domain.max - config.domain.min).norm();
-  io::AxisBox inside = config.domain;
+  AxisBox inside = config.domain;
   inside.min.array() -= tolerance;
   inside.max.array() += tolerance;
   for (std::size_t b = 0; b < n; ++b) {
-    const ContactBody& body = system_.bodies()[b];
-    for (std::size_t k = 0; k < body.surface_position.size(); ++k) {
-      const Vec3 x = body.state.position + body.state.orientation * body.surface_position[k];
+    const RigidBody& body = system_.bodies()[b].state;
+    for (const Vec3& local : system_.shape(b).surface_position) {
+      const Vec3 x = body.position + body.orientation * local;
       if (!inside.contains(x, dimension)) {
         fail(b, "position",
              fmt::format("body '{}' is not inside the domain: its surface reaches ({:.4g}, {:.4g}, "
@@ -236,7 +236,7 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
       if (b == a) continue;
-      const double depth = penetration(system_.bodies()[a], system_.bodies()[b]);
+      const double depth = penetration(a, b);
       if (depth > 0.1 * dx) {
         fail(a, "position",
              fmt::format("{} and {} overlap at the start: a surface particle of the first lies "
@@ -249,11 +249,15 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
 
 // How deep the surface particles of `a` lie inside `b`: for each, the distance behind the face
 // of b's nearest surface particle (0 when none is behind it).
-double RigidBodies::penetration(const ContactBody& a, const ContactBody& b) {
+double RigidBodies::penetration(std::size_t body_a, std::size_t body_b) const {
+  const ContactShape& a = system_.shape(body_a);
+  const ContactShape& b = system_.shape(body_b);
+  const RigidBody& state_a = system_.bodies()[body_a].state;
+  const RigidBody& state_b = system_.bodies()[body_b].state;
   double deepest = 0;
   for (const Vec3& pa : a.surface_position) {
-    const Vec3 x = b.state.orientation.conjugate() *
-                   (a.state.position + a.state.orientation * pa - b.state.position);
+    const Vec3 x = state_b.orientation.conjugate() *
+                   (state_a.position + state_a.orientation * pa - state_b.position);
     const auto [closest, distance] = nearest_surface_particle(b, x);
     if (closest < b.surface_position.size()) {
       deepest =
@@ -312,8 +316,9 @@ bool RigidBodies::occupies(const Vec3& x, double clearance) const {
 }
 
 bool RigidBodies::body_occupies(std::size_t b, const Vec3& x, double clearance) const {
-  const ContactBody& body = system_.bodies()[b];
-  const Vec3 local = body.state.orientation.conjugate() * (x - body.state.position);
+  const ContactShape& body = system_.shape(b);
+  const RigidBody& state = system_.bodies()[b].state;
+  const Vec3 local = state.orientation.conjugate() * (x - state.position);
   if ((local.array() < local_min_[b].array() - clearance).any() ||
       (local.array() > local_max_[b].array() + clearance).any()) {
     return false;

@@ -59,7 +59,8 @@ class RigidBodies {
 
  private:
   bool body_occupies(std::size_t b, const Vec3& x, double clearance) const;
-  static double penetration(const ContactBody& a, const ContactBody& b);
+  // How deep the surface particles of body a lie inside body b (bodies or walls).
+  double penetration(std::size_t a, std::size_t b) const;
 
   std::vector<io::BodyConfig> configs_;
   MultibodySystem system_;

@@ -27,7 +27,7 @@ double next_multiple(double time, double interval) {
 }
 
 template <int D>
-FluidEnergy fluid_energy(const SimulationState<D>& s) {
+FluidEnergy fluid_energy(const ParticleState<D>& s) {
   const auto& ps = s.particles;
   FluidEnergy e;
   for (std::size_t i = 0; i < ps.size(); ++i) {

@@ -29,26 +29,27 @@ Simulation<D>::Simulation(const io::CaseConfig& config)
       bodies_(std::make_unique<RigidBodies>(
           config, wall_layers(radius_for<D>(model_.get(), config), config.spacing))),
       state_(build_state<D>(config, radius_for<D>(model_.get(), config), *bodies_)) {
-  std::vector<std::unique_ptr<Stage<D>>> before, after;
+  std::vector<std::unique_ptr<ParticleStage<D>>> before, after;
   if (model_) {
     model_->initialize(state_);
     model_->append_stages(before, after);
   }
   stages_ = std::move(before);
   if (!bodies_->empty()) {
-    stages_.push_back(make_stage<D>("bodies", [this](SimulationState<D>& s) { move_bodies(s); }));
+    stages_.push_back(
+        make_stage<ParticleState<D>>("bodies", [this](ParticleState<D>& s) { move_bodies(s); }));
   }
   if (model_) {
     // The engine's own stage: sort particles by cell so neighbours sit close in memory.
-    stages_.push_back(make_stage<D>("neighbours", [this](SimulationState<D>& s) {
+    stages_.push_back(make_stage<ParticleState<D>>("neighbours", [this](ParticleState<D>& s) {
       s.cells.sort(s.particles.position, order_);
       s.particles.reorder(order_);
     }));
   }
   for (auto& stage : after) stages_.push_back(std::move(stage));
   if (model_ && !bodies_->empty()) {
-    stages_.push_back(
-        make_stage<D>("body_loads", [this](SimulationState<D>& s) { sum_body_loads(s); }));
+    stages_.push_back(make_stage<ParticleState<D>>(
+        "body_loads", [this](ParticleState<D>& s) { sum_body_loads(s); }));
     sum_body_loads(state_);
   }
   for (const auto& stage : stages_) slots_.push_back(timers_.slot(stage->name()));
@@ -67,7 +68,7 @@ double Simulation<D>::next_time_step() {
 }
 
 template <int D>
-void Simulation<D>::move_bodies(SimulationState<D>& s) {
+void Simulation<D>::move_bodies(ParticleState<D>& s) {
   bodies_->advance(s.dt);
   auto& ps = s.particles;
   exec::Default::for_each(ps.size(), [&](std::size_t i) {
@@ -82,7 +83,7 @@ void Simulation<D>::move_bodies(SimulationState<D>& s) {
 // The fluid's force on each body point, summed per body into a force and a moment about the
 // centre of mass.
 template <int D>
-void Simulation<D>::sum_body_loads(const SimulationState<D>& s) {
+void Simulation<D>::sum_body_loads(const ParticleState<D>& s) {
   point_force_.assign(bodies_->points().size(), Vec3::Zero());
   model_->body_point_forces(s, point_force_);
   std::vector<Vec3> force(bodies_->count(), Vec3::Zero()), moment(bodies_->count(), Vec3::Zero());

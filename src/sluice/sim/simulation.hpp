@@ -7,9 +7,9 @@
 
 #include "sluice/core/stage_timer.hpp"
 #include "sluice/fluid/fluid_model.hpp"
+#include "sluice/fluid/particle_state.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
-#include "sluice/sim/state.hpp"
 
 namespace sluice {
 
@@ -22,8 +22,8 @@ class Simulation {
   // Advances by one step of the model's stable size, clipped so as not to pass `until`.
   void step(double until);
 
-  SimulationState<D>& state() { return state_; }
-  const SimulationState<D>& state() const { return state_; }
+  ParticleState<D>& state() { return state_; }
+  const ParticleState<D>& state() const { return state_; }
   // A case of bodies alone has no fluid model.
   bool has_model() const { return model_ != nullptr; }
   const FluidModel<D>& model() const { return *model_; }
@@ -34,15 +34,15 @@ class Simulation {
   double next_time_step();
 
  private:
-  void move_bodies(SimulationState<D>& s);
-  void sum_body_loads(const SimulationState<D>& s);
+  void move_bodies(ParticleState<D>& s);
+  void sum_body_loads(const ParticleState<D>& s);
 
   io::CaseConfig config_;
   std::unique_ptr<FluidModel<D>> model_;
   std::unique_ptr<RigidBodies> bodies_;
-  SimulationState<D> state_;
+  ParticleState<D> state_;
   std::vector<Vec3> point_force_;
-  std::vector<std::unique_ptr<Stage<D>>> stages_;
+  std::vector<std::unique_ptr<ParticleStage<D>>> stages_;
   StageTimers timers_;
   std::vector<std::size_t> slots_;
   std::vector<std::uint32_t> order_;

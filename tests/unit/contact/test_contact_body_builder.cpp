@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "sluice/contact/contact_body_builder.hpp"
+#include "sluice/contact/multibody_system.hpp"
 
 namespace sluice {
 namespace {

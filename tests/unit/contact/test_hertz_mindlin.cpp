@@ -20,7 +20,8 @@ struct Impact {
 
 // A sphere of radius R falls at speed v0 onto the plane z = 0 (no gravity during contact).
 Impact drop_sphere(const ContactMaterial& material, double mass, double radius, double v0) {
-  const ContactPair pair = make_contact_pair(material, mass, radius, material, 0, 0);
+  HertzDampingTable damping;
+  const ContactPair pair = make_contact_pair(material, mass, radius, material, 0, 0, damping);
   RigidBody sphere;
   sphere.mass = mass;
   sphere.principal_inertia = Vec3::Constant(0.4 * mass * radius * radius);
@@ -97,7 +98,8 @@ INSTANTIATE_TEST_SUITE_P(C1, Restitution, ::testing::Values(0.2, 0.5, 0.9));
 
 TEST(HertzMindlin, StaticFrictionHoldsAndSlidingForceIsMuTimesNormal) {
   const ContactMaterial material{1e8, 0.3, 0.5, 0.4};
-  const ContactPair pair = make_contact_pair(material, 1.0, 0.1, material, 0, 0);
+  HertzDampingTable damping;
+  const ContactPair pair = make_contact_pair(material, 1.0, 0.1, material, 0, 0, damping);
   const Vec3 normal = Vec3::UnitZ();
   const double overlap = 1e-4;
   // Sticking: a tiny tangential creep stays below mu F_n and the spring opposes it.
@@ -124,6 +126,14 @@ TEST(HertzMindlin, DampingForRestitutionIsMonotonic) {
   }
   EXPECT_THROW(hertz_damping_for_restitution(0.0), std::invalid_argument);
   EXPECT_THROW(hertz_damping_for_restitution(1.5), std::invalid_argument);
+}
+
+TEST(HertzMindlin, DampingTableRemembersTheBisection) {
+  HertzDampingTable table;
+  EXPECT_EQ(table.gamma(0.5), hertz_damping_for_restitution(0.5));
+  EXPECT_EQ(table.gamma(0.5), table.gamma(0.5));
+  EXPECT_GT(table.gamma(0.2), table.gamma(0.5));
+  EXPECT_THROW(table.gamma(0.0), std::invalid_argument);
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ struct Reference {
   std::vector<double> density_rate;
   std::vector<double> wall_pressure;
 
-  Reference(const SimulationState<D>& s, const WcsphParameters& p, const Kernel& kernel,
+  Reference(const ParticleState<D>& s, const WcsphParameters& p, const Kernel& kernel,
             const TaitEquation& eos) {
     const auto& ps = s.particles;
     const std::size_t n = ps.size();
@@ -133,7 +133,7 @@ Deviation compare_with_reference(const std::string& kernel_name, const std::stri
   WcsphModel<D, Kernel> model(p, config);
   const Real radius = model.interaction_radius();
   RigidBodies bodies(config, wall_layers(radius, config.spacing));
-  SimulationState<D> s = build_state<D>(config, radius, bodies);
+  ParticleState<D> s = build_state<D>(config, radius, bodies);
   auto& ps = s.particles;
   std::mt19937 random(12345);
   std::uniform_real_distribution<double> unit(-1, 1);

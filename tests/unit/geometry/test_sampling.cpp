@@ -6,8 +6,8 @@
 namespace sluice {
 namespace {
 
-io::AxisBox box(Vec3 min, Vec3 max) {
-  return io::AxisBox{min, max};
+AxisBox box(Vec3 min, Vec3 max) {
+  return AxisBox{min, max};
 }
 
 TEST(Sampling, BoxVolumeIsALatticeOfWholeParticles) {

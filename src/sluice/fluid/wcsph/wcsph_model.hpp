@@ -35,13 +35,14 @@ class WcsphModel final : public FluidModel<D> {
         p_.density_diffusion, p_.no_slip ? "no-slip" : "free-slip");
   }
 
-  void initialize(SimulationState<D>& s) override {
+  void initialize(ParticleState<D>& s) override {
     auto& ps = s.particles;
-    acceleration_ = ps.add_vector_field();
-    density_rate_ = ps.add_scalar_field();
-    half_velocity_ = ps.add_vector_field();
-    half_density_ = ps.add_scalar_field();
-    wall_velocity_ = ps.add_vector_field();
+    acceleration_ = ps.add_vector_field({"acceleration", "m/s^2"});
+    density_rate_ = ps.add_scalar_field({"density_rate", "kg/m^3/s"});
+    half_velocity_ = ps.add_vector_field({"half_step_velocity", "m/s"});
+    half_density_ = ps.add_scalar_field({"half_step_density", "kg/m^3"});
+    // Walls: the velocity the viscous terms see (no-slip: mirrored about the wall's own).
+    wall_velocity_ = ps.add_vector_field({"wall_velocity", "m/s"});
     // The builder set a hydrostatic pressure; the density follows from the equation of state.
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (ps.is_fluid(i)) ps.density[i] = eos_.density(ps.pressure[i]);
@@ -51,13 +52,15 @@ class WcsphModel final : public FluidModel<D> {
     measure_extremes(s);
   }
 
-  void append_stages(std::vector<std::unique_ptr<Stage<D>>>& before,
-                     std::vector<std::unique_ptr<Stage<D>>>& after) override {
-    before.push_back(make_stage<D>("kick_drift", [this](SimulationState<D>& s) { kick_drift(s); }));
+  void append_stages(std::vector<std::unique_ptr<ParticleStage<D>>>& before,
+                     std::vector<std::unique_ptr<ParticleStage<D>>>& after) override {
+    before.push_back(
+        make_stage<ParticleState<D>>("kick_drift", [this](ParticleState<D>& s) { kick_drift(s); }));
+    after.push_back(make_stage<ParticleState<D>>("wall_state",
+                                                 [this](ParticleState<D>& s) { update_walls(s); }));
     after.push_back(
-        make_stage<D>("wall_state", [this](SimulationState<D>& s) { update_walls(s); }));
-    after.push_back(make_stage<D>("forces", [this](SimulationState<D>& s) { compute_rates(s); }));
-    after.push_back(make_stage<D>("kick", [this](SimulationState<D>& s) {
+        make_stage<ParticleState<D>>("forces", [this](ParticleState<D>& s) { compute_rates(s); }));
+    after.push_back(make_stage<ParticleState<D>>("kick", [this](ParticleState<D>& s) {
       kick(s);
       measure_extremes(s);
     }));
@@ -68,7 +71,7 @@ class WcsphModel final : public FluidModel<D> {
   FieldHandle<Real> density_rate_field() const { return density_rate_; }
   FieldHandle<Vec<D>> wall_velocity_field() const { return wall_velocity_; }
 
-  double next_time_step(const SimulationState<D>& s) const override {
+  double next_time_step(const ParticleState<D>& s) const override {
     const Real h = kernel_.h;
     double dt = p_.cfl * h / (eos_.c0 + max_speed_);
     if (max_acceleration_ > 0) dt = std::min(dt, p_.force_cfl * std::sqrt(h / max_acceleration_));
@@ -79,7 +82,7 @@ class WcsphModel final : public FluidModel<D> {
  private:
   // First half kick and drift; velocity and density are then predicted to the end of the
   // step for the force evaluation, which keeps one force evaluation per step.
-  void kick_drift(SimulationState<D>& s) {
+  void kick_drift(ParticleState<D>& s) {
     auto& ps = s.particles;
     auto& a = ps[acceleration_];
     auto& drho = ps[density_rate_];
@@ -97,7 +100,7 @@ class WcsphModel final : public FluidModel<D> {
     });
   }
 
-  void kick(SimulationState<D>& s) {
+  void kick(ParticleState<D>& s) {
     auto& ps = s.particles;
     auto& a = ps[acceleration_];
     auto& drho = ps[density_rate_];
@@ -112,7 +115,7 @@ class WcsphModel final : public FluidModel<D> {
     });
   }
 
-  void measure_extremes(const SimulationState<D>& s) {
+  void measure_extremes(const ParticleState<D>& s) {
     const auto& ps = s.particles;
     const auto& a = ps[acceleration_];
     max_speed_ = exec::Default::max_of(
@@ -122,7 +125,7 @@ class WcsphModel final : public FluidModel<D> {
   }
 
   // Copies what the pair loops read into the packed single-precision arrays.
-  void pack(const SimulationState<D>& s, bool with_rates) {
+  void pack(const ParticleState<D>& s, bool with_rates) {
     const auto& ps = s.particles;
     const auto& wall_velocity = ps[wall_velocity_];
     packed_.resize(ps.size());
@@ -156,7 +159,7 @@ class WcsphModel final : public FluidModel<D> {
   // Adami, Hu & Adams (2012): wall pressure from the fluid around it, with the hydrostatic
   // correction; wall density from the inverse equation of state; for no-slip, the wall's
   // viscous velocity mirrors the fluid's Shepard-averaged velocity about the wall's own.
-  void update_walls(SimulationState<D>& s) {
+  void update_walls(ParticleState<D>& s) {
     pack(s, false);
     auto& ps = s.particles;
     auto& wall_velocity = ps[wall_velocity_];
@@ -189,7 +192,7 @@ class WcsphModel final : public FluidModel<D> {
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
   // neighbours j in compute_rates (the same pair terms, seen from the other side), so that the
   // fluid and the bodies exchange equal and opposite forces.
-  void body_point_forces(const SimulationState<D>& s, std::vector<Vec3>& force) const override {
+  void body_point_forces(const ParticleState<D>& s, std::vector<Vec3>& force) const override {
     const auto& ps = s.particles;
     const auto p = packed_.view();
     const double h = kernel_.h, c0 = eos_.c0;
@@ -258,7 +261,7 @@ class WcsphModel final : public FluidModel<D> {
 
   // Continuity with density diffusion and the momentum equation, gathered per fluid particle
   // (each pair evaluated from both sides, so no two threads write the same particle).
-  void compute_rates(SimulationState<D>& s) {
+  void compute_rates(ParticleState<D>& s) {
     pack(s, true);
     auto& ps = s.particles;
     auto& acceleration = ps[acceleration_];

@@ -1,0 +1,54 @@
+// Contact between rigid bodies as one pipeline, run at every solid sub-step: place each body's
+// surface particles, a broad phase on a grid (candidate body pairs), the narrow phase (particle
+// pairs with face normals and gaps), a contact set with persistent identities, and a solver
+// that turns the contacts into forces. The rigid system sees it as a BodyInteraction.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "sluice/contact/broad_phase.hpp"
+#include "sluice/contact/contact_solver.hpp"
+#include "sluice/contact/narrow_phase.hpp"
+#include "sluice/contact/world_surface.hpp"
+#include "sluice/rigid/body_interaction.hpp"
+
+namespace sluice {
+
+class ContactPipeline final : public BodyInteraction {
+ public:
+  // contact_distance: particle pairs closer than this are examined (about the spacing).
+  ContactPipeline(double contact_distance, std::unique_ptr<ContactSolver> solver);
+
+  // The shape of the next body of the rigid system (shapes and bodies share their indices).
+  void add(ContactShape shape) { shapes_.push_back(std::move(shape)); }
+  const std::vector<ContactShape>& shapes() const { return shapes_; }
+  const ContactSet& contacts() const { return contacts_; }
+  const ContactSolver& solver() const { return *solver_; }
+
+  void evaluate(const std::vector<SystemBody>& bodies, double dt, std::vector<Vec3>& force,
+                std::vector<Vec3>& torque) override;
+  // The solver's step for every pair of bodies that can come within reach during dt.
+  double stable_step(const std::vector<SystemBody>& bodies, double dt) override;
+  double stored_energy() const override { return solver_->stored_energy(); }
+
+ private:
+  void place(const std::vector<SystemBody>& bodies);
+  // The broad phase's pairs, each body's box grown by `growth` (may be empty) and then by
+  // `margin`; a plane wall's pairs also checked against its plane.
+  void candidates(const std::vector<SystemBody>& bodies, const std::vector<double>& growth,
+                  double margin);
+
+  double distance_;
+  std::unique_ptr<ContactSolver> solver_;
+  std::vector<ContactShape> shapes_;
+  std::vector<WorldSurface> surfaces_;  // the shapes' particles in the world
+  BroadPhase broad_phase_;
+  NarrowPhase narrow_phase_;
+  ContactSet contacts_;
+  std::vector<AxisBox> boxes_;
+  std::vector<bool> fixed_, large_;
+  std::vector<BodyPair> pairs_;
+};
+
+}  // namespace sluice

@@ -1,0 +1,40 @@
+// Everything a particle model evolves: the particles, their neighbour grid and the clock,
+// passed explicitly to every stage (no global state).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sluice/core/stage.hpp"
+#include "sluice/core/types.hpp"
+#include "sluice/geometry/axis_box.hpp"
+#include "sluice/neighbor/cell_list.hpp"
+#include "sluice/particles/particle_set.hpp"
+
+namespace sluice {
+
+template <int D>
+struct ParticleState {
+  ParticleSet<D> particles;
+  CellList<D> cells;
+  Vec<D> gravity = Vec<D>::Zero();
+  Real spacing = 0;
+  Real rest_density = 1000;
+  Real kinematic_viscosity = 0;
+  AxisBox domain;
+  // The domain grown by the wall thickness: a fluid particle outside it has escaped.
+  AxisBox escape_box;
+  double time = 0;
+  double dt = 0;
+  long step = 0;
+  std::size_t fluid_count = 0;
+  // Acceleration of each body point over the last step (RigidBodies::points() order): moving
+  // walls feel it in their pressure.
+  std::vector<Vec3> body_point_acceleration;
+};
+
+// The stages of a particle model run on its state.
+template <int D>
+using ParticleStage = Stage<ParticleState<D>>;
+
+}  // namespace sluice

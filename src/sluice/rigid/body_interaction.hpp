@@ -1,0 +1,35 @@
+// A body of the rigid system, and the interface through which bodies push on each other.
+// The rigid system integrates; what the forces are (a penalty contact law today) lives behind
+// this interface, in contact/.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "sluice/rigid/rigid_body.hpp"
+
+namespace sluice {
+
+struct SystemBody {
+  RigidBody state;
+  bool fixed = false;  // walls, fixed and prescribed bodies: infinite mass, not moved by forces
+  // A prescribed body: sets its state (pose and velocities) at a time; called every sub-step.
+  std::function<void(double time, RigidBody& state)> prescribed;
+};
+
+// Forces between bodies that depend on their states, evaluated at every solid sub-step.
+class BodyInteraction {
+ public:
+  virtual ~BodyInteraction() = default;
+  // Force and torque (about each centre of mass) on every body for the bodies' present states;
+  // `dt` is the sub-step the forces act over (0: evaluate only), for laws with a history.
+  // `force` and `torque` come sized to the bodies and zeroed.
+  virtual void evaluate(const std::vector<SystemBody>& bodies, double dt, std::vector<Vec3>& force,
+                        std::vector<Vec3>& torque) = 0;
+  // The sub-step the interaction needs over a coming step of dt (dt when none shorter).
+  virtual double stable_step(const std::vector<SystemBody>& bodies, double dt) = 0;
+  // The energy stored in it at the last evaluation (contact springs).
+  virtual double stored_energy() const = 0;
+};
+
+}  // namespace sluice
