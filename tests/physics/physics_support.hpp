@@ -14,12 +14,12 @@ inline io::CaseConfig load_case(const std::string& name,
   return io::read_case(std::string(SLUICE_SOURCE_DIR) + "/cases/" + name, overrides);
 }
 
-// Runs until `end`, calling observe(state) after every step.
+// Runs until `end`, calling observe(clock) after every step.
 template <int D, class Observe>
 void run_until(Simulation<D>& sim, double end, Observe&& observe) {
-  while (sim.state().time < end * (1 - 1e-12)) {
+  while (sim.time() < end * (1 - 1e-12)) {
     sim.step(end);
-    observe(sim.state());
+    observe(sim.clock());
   }
 }
 

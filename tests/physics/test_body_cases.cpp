@@ -30,7 +30,7 @@ TEST_P(CaseDropAndBounce, ReboundRatioIsRestitution) {
   const auto& bodies = sim.bodies();
   std::vector<double> impact(2, 0), rebound(2, 0), previous(2, 0);
   std::vector<bool> touched(2, false), done(2, false);
-  run_until(sim, sim.config().end_time, [&](const ParticleState<3>&) {
+  run_until(sim, sim.config().end_time, [&](const StepClock&) {
     for (std::size_t b = 0; b < 2; ++b) {
       const bool touching = bodies.system().contact_force()[b].norm() > 0;
       if (touching && !touched[b]) impact[b] = -previous[b];
@@ -63,7 +63,7 @@ struct SlopeRun {
 SlopeRun roll_down_the_slope(const std::vector<std::string>& overrides) {
   Simulation<3> sim(load_case("slope_roll.yaml", overrides));
   const Vec3 start = sim.bodies().state(0).position;
-  run_until(sim, sim.config().end_time, [](const ParticleState<3>&) {});
+  run_until(sim, sim.config().end_time, [](const StepClock&) {});
   const double theta = 30 * std::numbers::pi / 180;
   const Vec3 down_slope(std::cos(theta), 0, -std::sin(theta));
   const RigidBody& ball = sim.bodies().state(0);
@@ -102,7 +102,7 @@ TEST(CaseIncline, SlidesWithTheCoulombAcceleration) {
   const double x0 = sim.bodies().state(0).position[0];
   const double weight = sim.bodies().state(0).mass * -sim.config().gravity[2];
   double lowest = 1e300, highest = 0;
-  run_until(sim, sim.config().end_time, [&](const ParticleState<3>& s) {
+  run_until(sim, sim.config().end_time, [&](const StepClock& s) {
     if (s.time < 0.05) return;
     const double normal = sim.bodies().system().contact_force()[0][2] / weight;
     lowest = std::min(lowest, normal);
@@ -128,7 +128,7 @@ TEST(CaseIncline, HoldsWhenFrictionIsEnough) {
   Simulation<3> sim(
       load_case("incline_block.yaml", {g, "bodies.0.material.friction=0.5", "end_time=2.0"}));
   const Vec3 start = sim.bodies().state(0).position;
-  run_until(sim, 2.0, [](const ParticleState<3>&) {});
+  run_until(sim, 2.0, [](const StepClock&) {});
   const double creep = (sim.bodies().state(0).position - start).head<2>().norm();
   std::printf("C3 (case): creep %.3g mm in 2 s\n", 1e3 * creep);
   EXPECT_LT(creep, 1e-3);
@@ -140,7 +140,7 @@ TEST(CaseRestingCubes, StayPutForFiveSeconds) {
   const auto& bodies = sim.bodies();
   std::vector<Vec3> start;
   for (std::size_t b = 0; b < bodies.count(); ++b) start.push_back(bodies.state(b).position);
-  run_until(sim, sim.config().end_time, [](const ParticleState<3>&) {});
+  run_until(sim, sim.config().end_time, [](const StepClock&) {});
   for (std::size_t b = 0; b < bodies.count(); ++b) {
     const auto& s = bodies.state(b);
     const double drift = (s.position - start[b]).norm();
@@ -163,7 +163,7 @@ TEST(CaseElasticBox, EnergyKeptOverHundredCollisions) {
   std::vector<bool> touching(bodies.count(), false);
   int starts = 0;
   double worst = 0;
-  run_until(sim, sim.config().end_time, [&](const ParticleState<3>&) {
+  run_until(sim, sim.config().end_time, [&](const StepClock&) {
     for (std::size_t b = 0; b < bodies.count(); ++b) {
       const bool now = bodies.system().contact_force()[b].norm() > 0;
       if (now && !touching[b]) ++starts;
@@ -189,9 +189,8 @@ TEST(CaseThreeBodies, MomentumAndFinalVelocities) {
   const Vec3 p0 = momentum();
   const double scale = 1.5 * 1.0 + 3.0 * 0.5;
   double worst = 0;
-  run_until(sim, sim.config().end_time, [&](const ParticleState<2>&) {
-    worst = std::max(worst, (momentum() - p0).norm() / scale);
-  });
+  run_until(sim, sim.config().end_time,
+            [&](const StepClock&) { worst = std::max(worst, (momentum() - p0).norm() / scale); });
   const double expected[3] = {-1.0, 1.8 * 0.5 / 4.2, 3.0 / 4.2};
   std::printf("C7 (case): momentum error %.2g, velocities %.4f %.4f %.4f\n", worst,
               bodies.state(0).velocity[0], bodies.state(1).velocity[0],
@@ -231,7 +230,7 @@ TEST(CaseHertzImpact, ContactTimeAndPeakOverlap) {
   const double t_c = 2.868 * std::pow(mass * mass / (radius * young * young * v0), 0.2);
   const double peak = std::pow(15 * mass * v0 * v0 / (16 * young * std::sqrt(radius)), 0.4);
   double first = -1, last = -1, deepest = 0;
-  testing::run_until(sim, sim.config().end_time, [&](const ParticleState<3>& s) {
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock& s) {
     if (bodies.system().contact_force()[0].norm() > 0) {
       if (first < 0) first = s.time;
       last = s.time;
@@ -256,7 +255,7 @@ TEST(CaseFloatingBox, DraftByArchimedes) {
   double sum = 0, drift = 0;
   long samples = 0;
   const double end = sim.config().end_time;
-  testing::run_until(sim, end, [&](const ParticleState<2>& s) {
+  testing::run_until(sim, end, [&](const StepClock& s) {
     const Vec3& x = sim.bodies().state(0).position;
     drift = std::max(drift, std::abs(x[0] - x0));
     if (s.time > end - 4.0) {
@@ -276,7 +275,7 @@ TEST(CaseFallingCube, SinksAndRestsOnTheFloor) {
   Simulation<3> sim(testing::load_case("falling_cube.yaml", {"end_time=0.4"}));
   const double half = 0.01, dx = sim.config().spacing;
   double lowest = 1;
-  testing::run_until(sim, sim.config().end_time, [&](const ParticleState<3>&) {
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock&) {
     lowest = std::min(lowest, sim.bodies().state(0).position[2] - half);
   });
   const auto& s = sim.bodies().state(0);
@@ -293,7 +292,7 @@ TEST(CaseFloatingBlock, Floats) {
   const double half_height = 0.012, water = 0.052, archimedes = 0.80052 * 0.024;
   double lowest = 1, sum = 0;
   long samples = 0;
-  testing::run_until(sim, sim.config().end_time, [&](const ParticleState<3>& s) {
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock& s) {
     const double bottom = sim.bodies().state(0).position[2] - half_height;
     lowest = std::min(lowest, bottom);
     if (s.time > 0.5 * sim.config().end_time) {
@@ -323,7 +322,7 @@ TEST(CaseDamBreakCubes, SixCubesStaySound) {
   std::vector<Vec3> initial;
   for (std::size_t b = 0; b < sim.bodies().count(); ++b)
     initial.push_back(sim.bodies().state(b).position);
-  testing::run_until(sim, sim.config().end_time, [&](const ParticleState<3>&) {
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock&) {
     const double e = total_energy(sim);
     worst_rise = std::max(worst_rise, e - lowest);
     lowest = std::min(lowest, e);
@@ -361,10 +360,10 @@ TEST(PrescribedPaddle, FollowsItsMotionAndFeelsTheWater) {
       "prescribed: {type: constant_velocity}}\nmodel:\n  name: wcsph\n";
   Simulation<2> sim(io::parse_case(text, "paddle.yaml"));
   double worst = 0;
-  testing::run_until(sim, 0.2, [&](const ParticleState<2>& s) {
+  testing::run_until(sim, 0.2, [&](const StepClock& s) {
     worst = std::max(worst, std::abs(sim.bodies().state(0).position[0] - (0.3 + 0.5 * s.time)));
   });
-  const double drag = sim.bodies().fluid_force()[0][0];
+  const double drag = sim.coupler().fluid_force()[0][0];
   std::printf("prescribed paddle: largest position error %.2g m, fluid force %.4g N/m along x\n",
               worst, drag);
   EXPECT_LT(worst, 1e-12);
@@ -395,11 +394,11 @@ TEST(SubCyclingInWater, SamePathsForFewerFluidSteps) {
     std::vector<std::pair<double, Vec3>> path;
     const double end = sim.config().end_time, interval = sim.config().body_interval;
     for (double t = interval; t < end + 0.5 * interval; t += interval) {
-      testing::run_until(sim, t, [](const ParticleState<2>&) {});
+      testing::run_until(sim, t, [](const StepClock&) {});
       for (std::size_t b = 0; b < sim.bodies().count(); ++b)
         path.emplace_back(t, sim.bodies().state(b).position);
     }
-    return std::make_pair(path, sim.state().step);
+    return std::make_pair(path, sim.clock().step);
   };
   const auto [cycled, cycled_steps] = run(true);
   const auto [reference, reference_steps] = run(false);

@@ -31,12 +31,12 @@ TEST(DamBreak2D, SurgeFrontMatchesExperiment) {
   Simulation<2> sim(config);
   io::ProbeConfig front;
   front.kind = io::ProbeKind::kSurgeFront;
-  Probes<2> probe({front}, "", sim.model().interaction_radius());
+  Probes probe({front}, "");
 
-  std::vector<double> times{0}, fronts{probe.measure(sim.state())[0]};
-  testing::run_until(sim, 0.72, [&](const ParticleState<2>& s) {
+  std::vector<double> times{0}, fronts{probe.measure(sim.fluid())[0]};
+  testing::run_until(sim, 0.72, [&](const StepClock& s) {
     times.push_back(s.time);
-    fronts.push_back(probe.measure(s)[0]);
+    fronts.push_back(probe.measure(sim.fluid())[0]);
   });
   double sum2 = 0;
   int count = 0;

@@ -12,7 +12,7 @@ namespace {
 ParticleSet<2> run_with_threads(int threads) {
   omp_set_num_threads(threads);
   Simulation<2> sim(testing::load_case("dam_break_2d.yaml", {"spacing=0.05"}));
-  testing::run_until(sim, 0.05, [](const ParticleState<2>&) {});
+  testing::run_until(sim, 0.05, [](const StepClock&) {});
   return sim.state().particles;
 }
 
@@ -36,7 +36,7 @@ std::unique_ptr<Simulation<2>> bodies_with_threads(int threads) {
   omp_set_num_threads(threads);
   auto sim =
       std::make_unique<Simulation<2>>(testing::load_case("subcycling_2d.yaml", {"spacing=0.02"}));
-  testing::run_until(*sim, 0.45, [](const ParticleState<2>&) {});
+  testing::run_until(*sim, 0.45, [](const StepClock&) {});
   return sim;
 }
 
@@ -47,8 +47,8 @@ TEST(Determinism, BodiesInWaterSameOnOneAndTwoThreads) {
   const Simulation<2>& one = *one_thread;
   const Simulation<2>& two = *two_threads;
   omp_set_num_threads(before);
-  ASSERT_EQ(one.state().step, two.state().step);
-  ASSERT_GT(one.bodies().substeps(), one.state().step);  // the blocks did land
+  ASSERT_EQ(one.clock().step, two.clock().step);
+  ASSERT_GT(one.bodies().substeps(), one.clock().step);  // the blocks did land
   for (std::size_t b = 0; b < one.bodies().count(); ++b) {
     const RigidBody& a = one.bodies().state(b);
     const RigidBody& c = two.bodies().state(b);

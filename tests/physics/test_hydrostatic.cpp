@@ -15,14 +15,14 @@ TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
   Simulation<2> sim(config);
   const double g = 9.81, rho0 = config.fluid.density, depth = 1.0;
   double worst_speed = 0;
-  testing::run_until(sim, 2.0, [&](const ParticleState<2>& s) {
+  const auto& s = sim.state();
+  testing::run_until(sim, 2.0, [&](const StepClock&) {
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
       if (s.particles.is_fluid(i))
         worst_speed = std::max(worst_speed, s.particles.velocity[i].norm());
     }
   });
-  const auto& s = sim.state();
-  ASSERT_NEAR(s.time, 2.0, 1e-12);
+  ASSERT_NEAR(sim.time(), 2.0, 1e-12);
 
   // Bottom pressure: the fluid's pressure interpolated at the floor.
   io::ProbeConfig bottom;
@@ -31,8 +31,8 @@ TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
   io::ProbeConfig level;
   level.kind = io::ProbeKind::kWaterHeight;
   level.point = Vec3(0.5, 0, 0);
-  Probes<2> probe({bottom, level}, "", sim.model().interaction_radius());
-  const auto measured = probe.measure(s);
+  Probes probe({bottom, level}, "");
+  const auto measured = probe.measure(sim.fluid());
   const double p_bottom = measured[0];
   EXPECT_NEAR(p_bottom, rho0 * g * depth, 0.03 * rho0 * g * depth);
   // The gauge finds the free surface within a particle spacing.

@@ -1,11 +1,18 @@
-// A named part of the time step, run on a context (a model's state). Stages run in order,
-// each timed on its own.
+// A named part of the time step, run on a context (the step's clock, or a model's state).
+// Stages run in order, each timed on its own.
 #pragma once
 
 #include <memory>
 #include <utility>
 
 namespace sluice {
+
+// Where the run is: the time at the start of the step being taken, its length and its number.
+struct StepClock {
+  double time = 0;
+  double dt = 0;
+  long step = 0;
+};
 
 // The interface of a stage.
 template <class Context>

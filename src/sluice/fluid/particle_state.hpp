@@ -1,11 +1,10 @@
-// Everything a particle model evolves: the particles, their neighbour grid and the clock,
-// passed explicitly to every stage (no global state).
+// Everything a particle model evolves: the particles and their neighbour grid, with the case's
+// constants they need.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "sluice/core/stage.hpp"
 #include "sluice/core/types.hpp"
 #include "sluice/geometry/axis_box.hpp"
 #include "sluice/neighbor/cell_list.hpp"
@@ -24,17 +23,10 @@ struct ParticleState {
   AxisBox domain;
   // The domain grown by the wall thickness: a fluid particle outside it has escaped.
   AxisBox escape_box;
-  double time = 0;
-  double dt = 0;
-  long step = 0;
   std::size_t fluid_count = 0;
-  // Acceleration of each body point over the last step (RigidBodies::points() order): moving
-  // walls feel it in their pressure.
+  // Acceleration of each body point over the last step (BodyPoints order): moving walls feel
+  // it in their pressure.
   std::vector<Vec3> body_point_acceleration;
 };
-
-// The stages of a particle model run on its state.
-template <int D>
-using ParticleStage = Stage<ParticleState<D>>;
 
 }  // namespace sluice

@@ -29,15 +29,16 @@ BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies) {
                                "fluid_kinetic", "fluid_potential", "total", "solid_substeps"});
 }
 
-void BodyOutput::record(double time, const RigidBodies& bodies, const FluidEnergy& fluid) {
+void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& coupler,
+                        const FluidEnergy& fluid) {
   if (!energy_csv_) return;
   const auto& system = bodies.system();
   for (std::size_t b = 0; b < bodies.count(); ++b) {
     const RigidBody& s = bodies.state(b);
     const Eigen::Quaterniond q = bodies.shape_orientation(b);
     const Vec3 w = s.angular_velocity();
-    const Vec3& ff = bodies.fluid_force()[b];
-    const Vec3& fm = bodies.fluid_moment()[b];
+    const Vec3& ff = coupler.fluid_force()[b];
+    const Vec3& fm = coupler.fluid_moment()[b];
     const Vec3& cf = system.contact_force()[b];
     const Vec3& cm = system.contact_torque()[b];
     body_csv_[b]->row({time,  s.position[0], s.position[1], s.position[2], q.w(), q.x(), q.y(),

@@ -6,22 +6,20 @@
 #include <string>
 #include <vector>
 
+#include "sluice/coupling/coupler.hpp"
+#include "sluice/fluid/fluid_system.hpp"
 #include "sluice/io/csv_writer.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace sluice {
-
-struct FluidEnergy {
-  double kinetic = 0;
-  double potential = 0;  // relative to z = 0 along -g, as the bodies'
-};
 
 class BodyOutput {
  public:
   // Creates OUT/bodies and the files (nothing when there are no bodies).
   BodyOutput(const std::string& out_dir, const RigidBodies& bodies);
 
-  void record(double time, const RigidBodies& bodies, const FluidEnergy& fluid);
+  void record(double time, const RigidBodies& bodies, const Coupler& coupler,
+              const FluidEnergy& fluid);
 
  private:
   std::vector<std::unique_ptr<io::CsvWriter>> body_csv_;

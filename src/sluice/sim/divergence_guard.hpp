@@ -1,33 +1,31 @@
 // Stops a run that has gone wrong: a body whose state is not finite or whose centre of mass
-// left the domain, a particle with a non-finite position, velocity, density or pressure, or a
-// fluid particle outside the domain. Keeps a copy of the last good state, so the frame written
-// on the way out shows the flow just before it broke.
+// left the domain, or whatever the fluid finds wrong with itself (a particle with a non-finite
+// state, or out of the domain). The fluid keeps its last good state, so the frame written on
+// the way out shows the flow just before it broke.
 #pragma once
 
 #include <optional>
 #include <string>
 
-#include "sluice/fluid/particle_state.hpp"
+#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/geometry/axis_box.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace sluice {
 
-template <int D>
 class DivergenceGuard {
  public:
-  // The problem with the state, or nothing when it is sound.
-  std::optional<std::string> check(const ParticleState<D>& s, const RigidBodies& bodies) const;
+  // A body whose centre lies outside `escape_box` has left the domain.
+  DivergenceGuard(const AxisBox& escape_box, int dimension)
+      : escape_box_(escape_box), dimension_(dimension) {}
 
-  // Remembers `s` as the last good state.
-  void remember(const ParticleState<D>& s);
-
-  const ParticleSet<D>& last_good() const { return last_good_; }
-  double last_good_time() const { return last_good_time_; }
+  // The problem after the step that `clock` counts, or nothing when all is sound.
+  std::optional<std::string> check(const StepClock& clock, const FluidSystem& fluid,
+                                   const RigidBodies& bodies) const;
 
  private:
-  ParticleSet<D> last_good_;
-  double last_good_time_ = 0;
-  bool holds_fields_ = false;
+  AxisBox escape_box_;
+  int dimension_;
 };
 
 }  // namespace sluice

@@ -23,8 +23,7 @@ namespace {
 // the true surface. (A fixed wall's particles sit likewise half a spacing behind its face.)
 struct ShapeSample {
   MassProperties mass;
-  BodySample surface;     // on the faces, with normals and areas (contact)
-  BodySample fluid_wall;  // depths dx/2, 3 dx/2, ...
+  BodySample surface;  // on the faces, with normals and areas (contact)
   double contact_radius = 0;
   bool flat_faces = true;
   bool spherical = false;  // a sphere, or a disc in 2D
@@ -37,17 +36,14 @@ double equivalent_radius(double volume, int dimension) {
                         : std::cbrt(3 * volume / (4 * std::numbers::pi));
 }
 
-ShapeSample sample_shape(const io::BodyConfig& b, double dx, int layers, int dimension) {
+ShapeSample sample_shape(const io::BodyConfig& b, double dx, int dimension) {
   ShapeSample out;
   const double density = b.density > 0 ? b.density : 1.0;  // scaled to the mass below
-  const double half = 0.5 * dx;
   switch (b.shape) {
     case io::BodyShape::kBox: {
       const Vec3 size = dimension == 2 ? Vec3(b.size[0], 1.0, b.size[2]) : b.size;
       out.mass = box_mass_properties(size, density);
       out.surface = sample_box_body(size, dx, 0, dimension);
-      const Vec3 inner = (size.array() - dx).cwiseMax(half).matrix();
-      out.fluid_wall = sample_box_body(inner, dx, layers - 1, dimension);
       out.contact_radius = equivalent_radius(out.mass.mass / density, dimension);
       break;
     }
@@ -58,15 +54,11 @@ ShapeSample sample_shape(const io::BodyConfig& b, double dx, int layers, int dim
       if (sphere) {
         out.mass = sphere_mass_properties(b.radius, density);
         out.surface = sample_sphere_body(b.radius, dx, 0, 3);
-        out.fluid_wall = sample_sphere_body(std::max(b.radius - half, half), dx, layers - 1, 3);
       } else {
         const double length = disc ? 1.0 : b.length;
         out.mass = cylinder_mass_properties(b.radius, length, density);
         if (disc) std::swap(out.mass.inertia(1, 1), out.mass.inertia(2, 2));  // axis along y
         out.surface = sample_cylinder_body(b.radius, length, dx, 0, dimension);
-        out.fluid_wall =
-            sample_cylinder_body(std::max(b.radius - half, half), std::max(length - dx, half), dx,
-                                 layers - 1, dimension);
       }
       out.contact_radius = b.radius;
       out.flat_faces = false;
@@ -76,20 +68,46 @@ ShapeSample sample_shape(const io::BodyConfig& b, double dx, int layers, int dim
     case io::BodyShape::kMesh: {
       out.mass = mesh_mass_properties(b.mesh, density);
       out.surface = sample_mesh_body(b.mesh, dx, 0);
-      const BodySample all = sample_mesh_body(b.mesh, dx, layers);
-      for (std::size_t k = 0; k < all.position.size(); ++k) {
-        if (all.layer[k] < 1) continue;  // the lattice points at depth dx/2 and below
-        out.fluid_wall.position.push_back(all.position[k]);
-        out.fluid_wall.normal.push_back(Vec3::Zero());
-        out.fluid_wall.area.push_back(0);
-        out.fluid_wall.layer.push_back(all.layer[k] - 1);
-      }
       out.contact_radius = equivalent_radius(out.mass.mass / density, 3);
       break;
     }
   }
   if (b.mass > 0) out.mass = with_mass(out.mass, b.mass);
   return out;
+}
+
+// The points the fluid sees in a body, in the shape's frame: `layers` layers at depths dx/2,
+// 3 dx/2, ... (the shape shrunk by dx/2 and below; the fluid's boundary lies half a spacing
+// outside them, on the true surface).
+std::vector<Vec3> sample_under_surface(const io::BodyConfig& b, double dx, int layers,
+                                       int dimension) {
+  const double half = 0.5 * dx;
+  switch (b.shape) {
+    case io::BodyShape::kBox: {
+      const Vec3 size = dimension == 2 ? Vec3(b.size[0], 1.0, b.size[2]) : b.size;
+      const Vec3 inner = (size.array() - dx).cwiseMax(half).matrix();
+      return sample_box_body(inner, dx, layers - 1, dimension).position;
+    }
+    case io::BodyShape::kSphere:
+    case io::BodyShape::kCylinder: {
+      const bool disc = dimension == 2;
+      if (b.shape == io::BodyShape::kSphere && !disc)
+        return sample_sphere_body(std::max(b.radius - half, half), dx, layers - 1, 3).position;
+      const double length = disc ? 1.0 : b.length;
+      return sample_cylinder_body(std::max(b.radius - half, half), std::max(length - dx, half), dx,
+                                  layers - 1, dimension)
+          .position;
+    }
+    case io::BodyShape::kMesh: {
+      const BodySample all = sample_mesh_body(b.mesh, dx, layers);
+      std::vector<Vec3> out;
+      for (std::size_t k = 0; k < all.position.size(); ++k) {
+        if (all.layer[k] >= 1) out.push_back(all.position[k]);  // depth dx/2 and below
+      }
+      return out;
+    }
+  }
+  return {};
 }
 
 // The surface particle of `body` nearest to `local` (in the body's frame) and its distance;
@@ -131,15 +149,17 @@ void place(RigidBody& state, const ShapePose& pose, const Vec3& com,
 
 }  // namespace
 
-RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
+RigidBodies::RigidBodies(const io::CaseConfig& config)
     : configs_(config.bodies),
+      spacing_(config.spacing),
+      dimension_(config.dimension),
       system_(config.contact.distance, config.gravity, config.contact.substep_fraction) {
   const double dx = config.spacing;
   const int dimension = config.dimension;
   std::vector<std::string> names;
   for (std::size_t b = 0; b < configs_.size(); ++b) {
     const io::BodyConfig& c = configs_[b];
-    const ShapeSample shape = sample_shape(c, dx, std::max(interior_layers, 1), dimension);
+    const ShapeSample shape = sample_shape(c, dx, dimension);
     const auto [axes, moments] = principal_axes(shape.mass.inertia);
     MassProperties principal = shape.mass;
     principal.inertia = moments.asDiagonal();
@@ -154,7 +174,9 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
     body.state.locked_rotation = c.locked_rotation;
     const Eigen::Quaterniond principal_rotation(axes);
     principal_.push_back(principal_rotation);
+    axes_.push_back(axes);
     const Vec3 com = shape.mass.center_of_mass;
+    centre_of_mass_.push_back(com);
     if (c.motion == io::BodyMotion::kPrescribed) {
       body.fixed = true;
       body.prescribed = [c, com, principal_rotation](double time, RigidBody& state) {
@@ -167,11 +189,6 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
         start.velocity = start.angular_velocity = Vec3::Zero();
       body.fixed = c.motion == io::BodyMotion::kFixed;
       place(body.state, start, com, principal_rotation);
-    }
-    // The fluid's points: surface particles alone when there is no fluid (for the output).
-    const BodySample& seen = config.has_fluid() ? shape.fluid_wall : shape.surface;
-    for (std::size_t k = 0; k < seen.position.size(); ++k) {
-      points_.push_back({b, axes.transpose() * (seen.position[k] - com)});
     }
     local_min_.push_back(Vec3::Constant(std::numeric_limits<double>::infinity()));
     local_max_.push_back(-local_min_.back());
@@ -205,10 +222,6 @@ RigidBodies::RigidBodies(const io::CaseConfig& config, int interior_layers)
     }
   }
   const std::size_t n = configs_.size();
-  acceleration_.assign(n, Vec3::Zero());
-  angular_acceleration_.assign(n, Vec3::Zero());
-  fluid_force_.assign(n, Vec3::Zero());
-  fluid_moment_.assign(n, Vec3::Zero());
 
   // The starting layout: inside the domain, and no two bodies overlapping.
   auto fail = [&](std::size_t b, const std::string& key, const std::string& problem) {
@@ -267,45 +280,33 @@ double RigidBodies::penetration(std::size_t body_a, std::size_t body_b) const {
   return deepest;
 }
 
-void RigidBodies::set_fluid_loads(std::vector<Vec3> force, std::vector<Vec3> moment) {
-  fluid_force_ = std::move(force);
-  fluid_moment_ = std::move(moment);
-  fluid_force_.resize(count(), Vec3::Zero());
-  fluid_moment_.resize(count(), Vec3::Zero());
-}
-
-int RigidBodies::advance(double dt) {
-  const std::size_t n = count();
-  std::vector<Vec3> velocity(n), angular_velocity(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    velocity[b] = state(b).velocity;
-    angular_velocity[b] = state(b).angular_velocity();
+std::vector<BodyKinematics> RigidBodies::motion() const {
+  std::vector<BodyKinematics> out(count());
+  for (std::size_t b = 0; b < count(); ++b) {
+    const RigidBody& s = state(b);
+    out[b].position = s.position;
+    out[b].orientation = s.orientation;
+    out[b].velocity = s.velocity;
+    out[b].angular_velocity = s.angular_velocity();
   }
-  const int substeps = system_.advance(dt, fluid_force_, fluid_moment_);
-  most_substeps_ = std::max(most_substeps_, substeps);
-  for (std::size_t b = 0; b < n; ++b) {
-    acceleration_[b] = (state(b).velocity - velocity[b]) / dt;
-    angular_acceleration_[b] = (state(b).angular_velocity() - angular_velocity[b]) / dt;
+  return out;
+}
+
+std::vector<BodyPoint> RigidBodies::points_under_surface(int layers) const {
+  std::vector<BodyPoint> out;
+  for (std::size_t b = 0; b < count(); ++b) {
+    for (const Vec3& x : sample_under_surface(configs_[b], spacing_, layers, dimension_))
+      out.push_back({b, axes_[b].transpose() * (x - centre_of_mass_[b])});
   }
-  return substeps;
+  return out;
 }
 
-Vec3 RigidBodies::point_position(std::size_t k) const {
-  const RigidBody& s = state(points_[k].body);
-  return s.position + s.orientation * points_[k].local;
-}
-
-Vec3 RigidBodies::point_velocity(std::size_t k) const {
-  const RigidBody& s = state(points_[k].body);
-  return s.velocity + s.angular_velocity().cross(s.orientation * points_[k].local);
-}
-
-Vec3 RigidBodies::point_acceleration(std::size_t k) const {
-  const std::size_t b = points_[k].body;
-  const RigidBody& s = state(b);
-  const Vec3 r = s.orientation * points_[k].local;
-  const Vec3 w = s.angular_velocity();
-  return acceleration_[b] + angular_acceleration_[b].cross(r) + w.cross(w.cross(r));
+std::vector<BodyPoint> RigidBodies::surface_points() const {
+  std::vector<BodyPoint> out;
+  for (std::size_t b = 0; b < count(); ++b) {
+    for (const Vec3& x : system_.shape(b).surface_position) out.push_back({b, x});
+  }
+  return out;
 }
 
 bool RigidBodies::occupies(const Vec3& x, double clearance) const {

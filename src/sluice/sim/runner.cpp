@@ -27,54 +27,41 @@ double next_multiple(double time, double interval) {
 }
 
 template <int D>
-FluidEnergy fluid_energy(const ParticleState<D>& s) {
-  const auto& ps = s.particles;
-  FluidEnergy e;
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    if (!ps.is_fluid(i)) continue;
-    e.kinetic += 0.5 * ps.mass[i] * ps.velocity[i].squaredNorm();
-    e.potential -= ps.mass[i] * s.gravity.dot(ps.position[i]);
-  }
-  return e;
-}
-
-template <int D>
 RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // Build (and so validate) everything before creating the output directory: bad input
   // must leave no directory behind.
   Simulation<D> sim(config);
   FrameOutput frames(options.out_dir, config.name);
   BodyOutput body_output(options.out_dir, sim.bodies());
-  std::vector<std::int32_t> body_of_point;
-  for (const BodyPoint& p : sim.bodies().points())
-    body_of_point.push_back(static_cast<std::int32_t>(p.body));
-  auto& s = sim.state();
-  Probes<D> probes(config.probes, options.out_dir + "/probes.csv",
-                   sim.has_model() ? sim.model().interaction_radius() : 2 * config.spacing);
-  DivergenceGuard<D> guard;
+  FluidSystem& fluid = sim.fluid();
+  Probes probes(config.probes, options.out_dir + "/probes.csv");
+  AxisBox escape_box = config.domain;
+  escape_box.min.array() -= fluid.interaction_radius();
+  escape_box.max.array() += fluid.interaction_radius();
+  DivergenceGuard guard(escape_box, D);
   const double end_time = options.end_time.value_or(config.end_time);
 
   RunSummary summary;
-  summary.particles = s.particles.size();
-  summary.fluid_particles = s.fluid_count;
+  summary.particles = fluid.size().elements;
+  summary.fluid_particles = fluid.size().fluid;
   summary.threads = exec::thread_count();
   summary.series_path = frames.series_path();
   summary.bodies = sim.bodies().count();
   if (!options.quiet) {
     fmt::print(stderr, "sluice: {} ({}D): {} particles ({} fluid), {} bodies, {} threads\n  {}\n",
                config.name, D, summary.particles, summary.fluid_particles, summary.bodies,
-               summary.threads, sim.has_model() ? sim.model().describe() : "no fluid");
+               summary.threads, fluid.describe());
   }
 
   auto& timers = sim.timers();
   const std::size_t output_slot = timers.slot("output");
   const std::size_t guard_slot = timers.slot("guard");
   timers.time(output_slot, [&] {
-    frames.write(s.particles, s.time, body_of_point);
-    probes.record(s);
-    body_output.record(s.time, sim.bodies(), fluid_energy(s));
+    frames.write(fluid.frame(), sim.time());
+    probes.record(sim.time(), fluid);
+    body_output.record(sim.time(), sim.bodies(), sim.coupler(), fluid.energy());
   });
-  guard.remember(s);
+  fluid.remember_good(sim.time());  // the guard's last good state
 
   ProgressReporter progress(end_time, stderr, options.live_progress);
   const auto start = std::chrono::steady_clock::now();
@@ -84,49 +71,51 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   double next_output = next_multiple(0, config.output_interval);
   double next_probe = probes.empty() ? end_time : next_multiple(0, config.probe_interval);
   double next_body = sim.bodies().empty() ? end_time : next_multiple(0, config.body_interval);
-  while (s.time < end_time * (1 - 1e-12)) {
+  while (sim.time() < end_time * (1 - 1e-12)) {
     const double until = std::min({next_output, next_probe, next_body, end_time});
     sim.step(until);
+    const double t = sim.time();
     std::optional<std::string> problem;
     timers.time(guard_slot, [&] {
-      problem = guard.check(s, sim.bodies());
-      if (!problem) guard.remember(s);
+      problem = guard.check(sim.clock(), fluid, sim.bodies());
+      if (!problem) fluid.remember_good(t);
     });
     if (problem) {
-      frames.write(guard.last_good(), guard.last_good_time(), body_of_point);
+      frames.write(fluid.last_good_frame(), fluid.last_good_time());
       if (!options.quiet) progress.finish();
       throw DivergenceError(
           *problem + fmt::format("; the last good state (t = {:.6g} s) is the last frame of {}",
-                                 guard.last_good_time(), frames.series_path()));
+                                 fluid.last_good_time(), frames.series_path()));
     }
-    const bool at_end = s.time >= end_time * (1 - 1e-12);
+    const bool at_end = t >= end_time * (1 - 1e-12);
     timers.time(output_slot, [&] {
-      if (!probes.empty() && (s.time >= next_probe * (1 - 1e-12) || at_end)) {
-        probes.record(s);
-        next_probe = next_multiple(s.time, config.probe_interval);
+      if (!probes.empty() && (t >= next_probe * (1 - 1e-12) || at_end)) {
+        probes.record(t, fluid);
+        next_probe = next_multiple(t, config.probe_interval);
       }
-      if (!sim.bodies().empty() && (s.time >= next_body * (1 - 1e-12) || at_end)) {
-        body_output.record(s.time, sim.bodies(), fluid_energy(s));
-        next_body = next_multiple(s.time, config.body_interval);
+      if (!sim.bodies().empty() && (t >= next_body * (1 - 1e-12) || at_end)) {
+        body_output.record(t, sim.bodies(), sim.coupler(), fluid.energy());
+        next_body = next_multiple(t, config.body_interval);
       }
-      if (s.time >= next_output * (1 - 1e-12) || at_end) {
-        frames.write(s.particles, s.time, body_of_point);
-        next_output = next_multiple(s.time, config.output_interval);
+      if (t >= next_output * (1 - 1e-12) || at_end) {
+        frames.write(fluid.frame(), t);
+        next_output = next_multiple(t, config.output_interval);
       }
     });
     if (!options.quiet) {
       const double wall = elapsed();
-      progress.update(s.time, s.step, wall > 0 ? double(summary.particles) * s.step / wall : 0);
+      const long steps = sim.clock().step;
+      progress.update(t, steps, wall > 0 ? double(summary.particles) * steps / wall : 0);
     }
   }
   if (!options.quiet) progress.finish();
 
-  summary.steps = s.step;
-  summary.simulated_time = s.time;
+  summary.steps = sim.clock().step;
+  summary.simulated_time = sim.time();
   summary.wall_seconds = elapsed();
   summary.frames = frames.frames_written();
   summary.solid_substeps = sim.bodies().substeps();
-  summary.most_substeps_per_step = sim.bodies().most_substeps();
+  summary.most_substeps_per_step = sim.coupler().most_substeps();
   summary.stages = timers.entries();
   return summary;
 }
@@ -134,14 +123,14 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
 template <int D>
 CheckSummary check(const io::CaseConfig& config) {
   Simulation<D> sim(config);
-  const auto& s = sim.state();
+  const FluidSize size = sim.fluid().size();
   CheckSummary out;
-  out.particles = s.particles.size();
-  out.fluid_particles = s.fluid_count;
-  out.body_particles = sim.bodies().points().size();
-  out.wall_particles = out.particles - out.fluid_particles - out.body_particles;
+  out.particles = size.elements;
+  out.fluid_particles = size.fluid;
+  out.body_particles = size.body;
+  out.wall_particles = size.wall;
   out.first_time_step = sim.next_time_step();
-  out.model = sim.has_model() ? sim.model().describe() : "no fluid";
+  out.model = sim.fluid().describe();
   out.bodies = sim.bodies().count();
   return out;
 }

@@ -1,4 +1,5 @@
-// A simulation: the state, the fluid model and the step as a list of named, timed stages.
+// A simulation: the case's bodies, its fluid, the coupler between them, and the step as a list
+// of named, timed stages.
 #pragma once
 
 #include <memory>
@@ -6,8 +7,10 @@
 #include <vector>
 
 #include "sluice/core/stage_timer.hpp"
-#include "sluice/fluid/fluid_model.hpp"
-#include "sluice/fluid/particle_state.hpp"
+#include "sluice/coupling/coupler.hpp"
+#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/fluid/model_registry.hpp"
+#include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
@@ -16,36 +19,41 @@ namespace sluice {
 template <int D>
 class Simulation {
  public:
-  // Builds the model and the particles from a validated case (throws InputError).
-  explicit Simulation(const io::CaseConfig& config);
+  // Builds the bodies, the fluid (the model the case names among `models`) and the coupling
+  // from a validated case (throws InputError).
+  Simulation(const io::CaseConfig& config, const ModelRegistry& models);
+  explicit Simulation(const io::CaseConfig& config) : Simulation(config, shipped_models<D>()) {}
 
   // Advances by one step of the model's stable size, clipped so as not to pass `until`.
   void step(double until);
+  double next_time_step();
 
-  ParticleState<D>& state() { return state_; }
-  const ParticleState<D>& state() const { return state_; }
-  // A case of bodies alone has no fluid model.
-  bool has_model() const { return model_ != nullptr; }
-  const FluidModel<D>& model() const { return *model_; }
+  const StepClock& clock() const { return clock_; }
+  double time() const { return clock_.time; }
+  // A case of bodies alone has no fluid model (its fluid draws the bodies' particles).
+  bool has_model() const { return config_.has_fluid(); }
+  const FluidSystem& fluid() const { return *fluid_; }
+  FluidSystem& fluid() { return *fluid_; }
+  // The particles of the fluid: every model so far is a particle model.
+  const ParticleState<D>& state() const { return particle_fluid().state(); }
+  const ParticleFluid<D>& particle_fluid() const {
+    return dynamic_cast<const ParticleFluid<D>&>(*fluid_);
+  }
   const RigidBodies& bodies() const { return *bodies_; }
+  const Coupler& coupler() const { return coupler_; }
   const StageTimers& timers() const { return timers_; }
   StageTimers& timers() { return timers_; }
   const io::CaseConfig& config() const { return config_; }
-  double next_time_step();
 
  private:
-  void move_bodies(ParticleState<D>& s);
-  void sum_body_loads(const ParticleState<D>& s);
-
   io::CaseConfig config_;
-  std::unique_ptr<FluidModel<D>> model_;
   std::unique_ptr<RigidBodies> bodies_;
-  ParticleState<D> state_;
-  std::vector<Vec3> point_force_;
-  std::vector<std::unique_ptr<ParticleStage<D>>> stages_;
+  std::unique_ptr<FluidSystem> fluid_;
+  Coupler coupler_;
+  StageList stages_;
   StageTimers timers_;
   std::vector<std::size_t> slots_;
-  std::vector<std::uint32_t> order_;
+  StepClock clock_;
 };
 
 }  // namespace sluice

@@ -15,7 +15,6 @@
 #include "sluice/io/case_config.hpp"
 #include "sluice/kernels/cubic_spline.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
-#include "sluice/sim/particle_builder.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace sluice {
@@ -130,10 +129,9 @@ template <int D, class Kernel>
 Deviation compare_with_reference(const std::string& kernel_name, const std::string& slip) {
   const io::CaseConfig config = disturbed_tank_case<D>(kernel_name, slip);
   const WcsphParameters p = read_wcsph_parameters(config);
-  WcsphModel<D, Kernel> model(p, config);
-  const Real radius = model.interaction_radius();
-  RigidBodies bodies(config, wall_layers(radius, config.spacing));
-  ParticleState<D> s = build_state<D>(config, radius, bodies);
+  const RigidBodies bodies(config);
+  WcsphModel<D, Kernel> model(p, config, bodies);
+  ParticleState<D>& s = model.state();
   auto& ps = s.particles;
   std::mt19937 random(12345);
   std::uniform_real_distribution<double> unit(-1, 1);
@@ -148,7 +146,7 @@ Deviation compare_with_reference(const std::string& kernel_name, const std::stri
   std::vector<std::uint32_t> order;
   s.cells.sort(ps.position, order);
   ps.reorder(order);
-  model.initialize(s);  // wall states and the first rates
+  model.initialize();  // wall states and the first rates
 
   const Kernel kernel(p.smoothing_length(config.spacing));
   const TaitEquation eos(config.fluid.density, p.sound_speed, p.gamma);

@@ -1,6 +1,6 @@
 // The case's bodies as built for a run: exact mass properties, the particles the fluid sees
-// half a spacing under the surface, rigid motion of the points, the inside test that keeps
-// fluid out of bodies, and the tank's sides as contact bodies.
+// half a spacing under the surface, the inside test that keeps fluid out of bodies, and the
+// tank's sides as contact bodies.
 #include <gtest/gtest.h>
 
 #include "sluice/io/case_config.hpp"
@@ -21,18 +21,16 @@ io::CaseConfig case_with(const std::string& bodies, bool fluid) {
 }
 
 TEST(RigidBodies, BoxMassAndFluidParticlesUnderTheSurface) {
-  const RigidBodies bodies(
-      case_with(
-          "  - {shape: box, size: [0.2, 0.3, 0.4], density: 500, position: [0.5, 0.5, 0.5]}\n",
-          true),
-      3);
+  const RigidBodies bodies(case_with(
+      "  - {shape: box, size: [0.2, 0.3, 0.4], density: 500, position: [0.5, 0.5, 0.5]}\n", true));
   ASSERT_EQ(bodies.count(), 1u);
   const RigidBody& s = bodies.state(0);
   EXPECT_NEAR(s.mass, 500 * 0.2 * 0.3 * 0.4, 1e-12);
   EXPECT_NEAR(s.principal_inertia[2], s.mass * (0.04 + 0.09) / 12, 1e-12);
   // The outermost particles the fluid sees lie dx/2 under each face.
   Vec3 extent = Vec3::Zero();
-  for (const BodyPoint& p : bodies.points()) extent = extent.cwiseMax(p.local.cwiseAbs());
+  for (const BodyPoint& p : bodies.points_under_surface(3))
+    extent = extent.cwiseMax(p.local.cwiseAbs());
   EXPECT_NEAR(extent[0], 0.1 - 0.025, 1e-12);
   EXPECT_NEAR(extent[2], 0.2 - 0.025, 1e-12);
   // Five closed sides of the tank join the body in the contact system.
@@ -40,33 +38,16 @@ TEST(RigidBodies, BoxMassAndFluidParticlesUnderTheSurface) {
 }
 
 TEST(RigidBodies, WithoutFluidThePointsAreTheSurface) {
-  const RigidBodies bodies(
-      case_with("  - {shape: sphere, radius: 0.1, density: 1000, position: [0.5, 0.5, 0.5]}\n",
-                false),
-      3);
-  for (const BodyPoint& p : bodies.points()) EXPECT_NEAR(p.local.norm(), 0.1, 1e-12);
-}
-
-TEST(RigidBodies, PointsMoveRigidly) {
-  const RigidBodies bodies(
-      case_with("  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.5, 0.5, 0.5], "
-                "velocity: [1, 0, 0], angular_velocity: [0, 0, 2], rotation_deg: [0, 0, 30]}\n",
-                true),
-      3);
-  for (std::size_t k = 0; k < bodies.points().size(); ++k) {
-    const Vec3 r = bodies.point_position(k) - Vec3(0.5, 0.5, 0.5);
-    EXPECT_NEAR(r.norm(), bodies.points()[k].local.norm(), 1e-12);
-    const Vec3 expected = Vec3(1, 0, 0) + Vec3(0, 0, 2).cross(r);
-    EXPECT_NEAR((bodies.point_velocity(k) - expected).norm(), 0, 1e-12);
-  }
+  const RigidBodies bodies(case_with(
+      "  - {shape: sphere, radius: 0.1, density: 1000, position: [0.5, 0.5, 0.5]}\n", false));
+  for (const BodyPoint& p : bodies.surface_points()) EXPECT_NEAR(p.local.norm(), 0.1, 1e-12);
 }
 
 TEST(RigidBodies, OccupiesInsideAndWithinClearance) {
   const RigidBodies bodies(
       case_with("  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.5, 0.5, 0.5], "
                 "rotation_deg: [0, 0, 45]}\n",
-                false),
-      0);
+                false));
   EXPECT_TRUE(bodies.occupies(Vec3(0.5, 0.5, 0.5), 0));
   EXPECT_TRUE(bodies.occupies(Vec3(0.5 + 0.13, 0.5, 0.5), 0));        // inside a turned corner
   EXPECT_FALSE(bodies.occupies(Vec3(0.5 + 0.1, 0.5 + 0.1, 0.5), 0));  // outside a turned face
@@ -76,12 +57,10 @@ TEST(RigidBodies, OccupiesInsideAndWithinClearance) {
 }
 
 TEST(RigidBodies, PrescribedBodyIsPlacedAtItsPose) {
-  const RigidBodies bodies(
-      case_with(
-          "  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.3, 0.5, 0.5], "
-          "velocity: [0.5, 0, 0], motion: prescribed, prescribed: {type: constant_velocity}}\n",
-          false),
-      0);
+  const RigidBodies bodies(case_with(
+      "  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.3, 0.5, 0.5], "
+      "velocity: [0.5, 0, 0], motion: prescribed, prescribed: {type: constant_velocity}}\n",
+      false));
   EXPECT_TRUE(bodies.system().bodies()[0].fixed);
   EXPECT_EQ(bodies.state(0).velocity, Vec3(0.5, 0, 0));
 }

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "sluice/exec/policy.hpp"
-#include "sluice/fluid/fluid_model.hpp"
+#include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
 #include "sluice/fluid/wcsph/wcsph_parameters.hpp"
@@ -18,14 +18,15 @@
 namespace sluice {
 
 template <int D, class Kernel>
-class WcsphModel final : public FluidModel<D> {
+class WcsphModel final : public ParticleFluid<D> {
  public:
-  WcsphModel(const WcsphParameters& parameters, const io::CaseConfig& config)
-      : p_(parameters),
+  WcsphModel(const WcsphParameters& parameters, const io::CaseConfig& config,
+             const BodyGeometry& bodies)
+      : ParticleFluid<D>(config, Kernel(parameters.smoothing_length(config.spacing)).support(),
+                         bodies),
+        p_(parameters),
         kernel_(parameters.smoothing_length(config.spacing)),
         eos_(config.fluid.density, parameters.sound_speed, parameters.gamma) {}
-
-  Real interaction_radius() const override { return kernel_.support(); }
 
   std::string describe() const override {
     return fmt::format(
@@ -35,7 +36,8 @@ class WcsphModel final : public FluidModel<D> {
         p_.density_diffusion, p_.no_slip ? "no-slip" : "free-slip");
   }
 
-  void initialize(ParticleState<D>& s) override {
+  void initialize() override {
+    ParticleState<D>& s = this->state();
     auto& ps = s.particles;
     acceleration_ = ps.add_vector_field({"acceleration", "m/s^2"});
     density_rate_ = ps.add_scalar_field({"density_rate", "kg/m^3/s"});
@@ -52,17 +54,16 @@ class WcsphModel final : public FluidModel<D> {
     measure_extremes(s);
   }
 
-  void append_stages(std::vector<std::unique_ptr<ParticleStage<D>>>& before,
-                     std::vector<std::unique_ptr<ParticleStage<D>>>& after) override {
-    before.push_back(
-        make_stage<ParticleState<D>>("kick_drift", [this](ParticleState<D>& s) { kick_drift(s); }));
-    after.push_back(make_stage<ParticleState<D>>("wall_state",
-                                                 [this](ParticleState<D>& s) { update_walls(s); }));
-    after.push_back(
-        make_stage<ParticleState<D>>("forces", [this](ParticleState<D>& s) { compute_rates(s); }));
-    after.push_back(make_stage<ParticleState<D>>("kick", [this](ParticleState<D>& s) {
-      kick(s);
-      measure_extremes(s);
+  void model_stages(StageList& before, StageList& after) override {
+    before.push_back(make_stage<const StepClock>(
+        "kick_drift", [this](const StepClock& c) { kick_drift(this->state(), c.dt); }));
+    after.push_back(make_stage<const StepClock>(
+        "wall_state", [this](const StepClock&) { update_walls(this->state()); }));
+    after.push_back(make_stage<const StepClock>(
+        "forces", [this](const StepClock&) { compute_rates(this->state()); }));
+    after.push_back(make_stage<const StepClock>("kick", [this](const StepClock& c) {
+      kick(this->state(), c.dt);
+      measure_extremes(this->state());
     }));
   }
 
@@ -71,7 +72,8 @@ class WcsphModel final : public FluidModel<D> {
   FieldHandle<Real> density_rate_field() const { return density_rate_; }
   FieldHandle<Vec<D>> wall_velocity_field() const { return wall_velocity_; }
 
-  double next_time_step(const ParticleState<D>& s) const override {
+  double next_time_step() const override {
+    const ParticleState<D>& s = this->state();
     const Real h = kernel_.h;
     double dt = p_.cfl * h / (eos_.c0 + max_speed_);
     if (max_acceleration_ > 0) dt = std::min(dt, p_.force_cfl * std::sqrt(h / max_acceleration_));
@@ -82,13 +84,12 @@ class WcsphModel final : public FluidModel<D> {
  private:
   // First half kick and drift; velocity and density are then predicted to the end of the
   // step for the force evaluation, which keeps one force evaluation per step.
-  void kick_drift(ParticleState<D>& s) {
+  void kick_drift(ParticleState<D>& s, Real dt) {
     auto& ps = s.particles;
     auto& a = ps[acceleration_];
     auto& drho = ps[density_rate_];
     auto& v_half = ps[half_velocity_];
     auto& rho_half = ps[half_density_];
-    const Real dt = s.dt;
     exec::Default::for_each(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;
       v_half[i] = ps.velocity[i] + 0.5 * dt * a[i];
@@ -100,13 +101,12 @@ class WcsphModel final : public FluidModel<D> {
     });
   }
 
-  void kick(ParticleState<D>& s) {
+  void kick(ParticleState<D>& s, Real dt) {
     auto& ps = s.particles;
     auto& a = ps[acceleration_];
     auto& drho = ps[density_rate_];
     auto& v_half = ps[half_velocity_];
     auto& rho_half = ps[half_density_];
-    const Real dt = s.dt;
     exec::Default::for_each(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;
       ps.velocity[i] = v_half[i] + 0.5 * dt * a[i];
@@ -192,7 +192,8 @@ class WcsphModel final : public FluidModel<D> {
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
   // neighbours j in compute_rates (the same pair terms, seen from the other side), so that the
   // fluid and the bodies exchange equal and opposite forces.
-  void body_point_forces(const ParticleState<D>& s, std::vector<Vec3>& force) const override {
+  void body_point_forces(std::vector<Vec3>& force) const override {
+    const ParticleState<D>& s = this->state();
     const auto& ps = s.particles;
     const auto p = packed_.view();
     const double h = kernel_.h, c0 = eos_.c0;

@@ -1,9 +1,11 @@
-#include "sluice/sim/particle_builder.hpp"
+#include "sluice/fluid/particle_fluid.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "sluice/core/errors.hpp"
+#include "sluice/exec/policy.hpp"
 #include "sluice/geometry/sampling.hpp"
 
 namespace sluice {
@@ -35,9 +37,14 @@ std::vector<Vec<D>> sample_walls(const io::CaseConfig& config, int layers) {
 }  // namespace
 
 template <int D>
-ParticleState<D> build_state(const io::CaseConfig& config, Real interaction_radius,
-                             const RigidBodies& bodies) {
-  ParticleState<D> s;
+ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_radius,
+                                const BodyGeometry& bodies)
+    : radius_(interaction_radius),
+      body_points_(config.has_fluid() ? bodies.points_under_surface(std::max(
+                                            wall_layers(interaction_radius, config.spacing), 1))
+                                      : bodies.surface_points()),
+      body_count_(bodies.body_count()) {
+  ParticleState<D>& s = state_;
   const Real dx = config.spacing;
   s.spacing = dx;
   s.gravity = from_3d<D>(config.gravity);
@@ -94,23 +101,77 @@ ParticleState<D> build_state(const io::CaseConfig& config, Real interaction_radi
   for (const auto& w : walls) {
     s.particles.add(w, Vec<D>::Zero(), config.fluid.density, mass, ParticleKind::kWall);
   }
-  for (std::size_t k = 0; k < bodies.points().size(); ++k) {
-    const Vec<D> x = from_3d<D>(bodies.point_position(k));
-    s.particles.add(x, from_3d<D>(bodies.point_velocity(k)), config.fluid.density, mass,
+  const std::vector<BodyKinematics> motion = bodies.motion();
+  for (std::size_t k = 0; k < body_points_.size(); ++k) {
+    const Vec<D> x = from_3d<D>(body_points_.position(k, motion));
+    s.particles.add(x, from_3d<D>(body_points_.velocity(k, motion)), config.fluid.density, mass,
                     ParticleKind::kBody);
     s.particles.body_point.back() = static_cast<std::int32_t>(k);
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  s.body_point_acceleration.assign(bodies.points().size(), Vec3::Zero());
+  s.body_point_acceleration.assign(body_points_.size(), Vec3::Zero());
 
   s.cells = CellList<D>(lo, hi, interaction_radius);
   s.cells.sort(s.particles.position, order);
   s.particles.reorder(order);
-  return s;
 }
 
-template ParticleState<2> build_state<2>(const io::CaseConfig&, Real, const RigidBodies&);
-template ParticleState<3> build_state<3>(const io::CaseConfig&, Real, const RigidBodies&);
+template <int D>
+void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_bodies) {
+  const auto start = static_cast<std::ptrdiff_t>(after_bodies.size());
+  model_stages(before_bodies, after_bodies);
+  // The engine's own stage, ahead of the model's later ones: sort the particles by cell so
+  // that neighbours sit close in memory.
+  auto neighbours = make_stage<const StepClock>("neighbours", [this](const StepClock&) {
+    state_.cells.sort(state_.particles.position, order_);
+    state_.particles.reorder(order_);
+  });
+  after_bodies.insert(after_bodies.begin() + start, std::move(neighbours));
+}
+
+template <int D>
+void ParticleFluid<D>::receive_body_motion(const std::vector<BodyKinematics>& motion) {
+  auto& ps = state_.particles;
+  exec::Default::for_each(ps.size(), [&](std::size_t i) {
+    const std::int32_t k = ps.body_point[i];
+    if (k < 0) return;
+    ps.position[i] = from_3d<D>(body_points_.position(k, motion));
+    ps.velocity[i] = from_3d<D>(body_points_.velocity(k, motion));
+    state_.body_point_acceleration[k] = body_points_.acceleration(k, motion);
+  });
+}
+
+template <int D>
+std::vector<Wrench> ParticleFluid<D>::body_loads(const std::vector<BodyKinematics>& motion) const {
+  std::vector<Vec3> force(body_points_.size(), Vec3::Zero());
+  body_point_forces(force);
+  return body_points_.loads(force, motion, body_count_);
+}
+
+template <int D>
+FluidSize ParticleFluid<D>::size() const {
+  FluidSize out;
+  out.elements = state_.particles.size();
+  out.fluid = state_.fluid_count;
+  out.body = body_points_.size();
+  out.wall = out.elements - out.fluid - out.body;
+  return out;
+}
+
+template <int D>
+FluidEnergy ParticleFluid<D>::energy() const {
+  const auto& ps = state_.particles;
+  FluidEnergy e;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (!ps.is_fluid(i)) continue;
+    e.kinetic += 0.5 * ps.mass[i] * ps.velocity[i].squaredNorm();
+    e.potential -= ps.mass[i] * state_.gravity.dot(ps.position[i]);
+  }
+  return e;
+}
+
+template class ParticleFluid<2>;
+template class ParticleFluid<3>;
 
 }  // namespace sluice

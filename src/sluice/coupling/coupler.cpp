@@ -1,0 +1,54 @@
+#include "sluice/coupling/coupler.hpp"
+
+#include <algorithm>
+
+namespace sluice {
+
+Coupler::Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling)
+    : system_(system),
+      bodies_(bodies),
+      fluid_(fluid),
+      subcycling_(subcycling),
+      motion_(bodies),
+      fluid_force_(bodies, Vec3::Zero()),
+      fluid_moment_(bodies, Vec3::Zero()) {
+  update_motion(0);
+}
+
+double Coupler::time_step(double fluid_dt) {
+  if (!fluid_) return fluid_dt;
+  return subcycling_ || bodies_ == 0 ? fluid_dt : system_.solid_step(fluid_dt);
+}
+
+// Each body's kinematics; over a step of dt > 0 the accelerations are the change of velocity.
+void Coupler::update_motion(double dt) {
+  for (std::size_t b = 0; b < bodies_; ++b) {
+    const RigidBody& s = system_.bodies()[b].state;
+    BodyKinematics& m = motion_[b];
+    const Vec3 angular_velocity = s.angular_velocity();
+    if (dt > 0) {
+      m.acceleration = (s.velocity - m.velocity) / dt;
+      m.angular_acceleration = (angular_velocity - m.angular_velocity) / dt;
+    }
+    m.position = s.position;
+    m.orientation = s.orientation;
+    m.velocity = s.velocity;
+    m.angular_velocity = angular_velocity;
+  }
+}
+
+void Coupler::advance_bodies(double dt) {
+  most_substeps_ = std::max(most_substeps_, system_.advance(dt, fluid_force_, fluid_moment_));
+  update_motion(dt);
+  if (fluid_) fluid_->receive_body_motion(motion_);
+}
+
+void Coupler::collect_loads() {
+  const std::vector<Wrench> loads = fluid_->body_loads(motion_);
+  for (std::size_t b = 0; b < bodies_; ++b) {
+    fluid_force_[b] = loads[b].force;
+    fluid_moment_[b] = loads[b].moment;
+  }
+}
+
+}  // namespace sluice

@@ -1,0 +1,47 @@
+// The order of the exchanges between a fluid and the rigid bodies: explicit co-simulation
+// (seed 000). In each fluid step the bodies advance first, over as many solid sub-steps as
+// their contacts need, with the fluid's last load held; the fluid then sees the bodies where
+// they now are, evaluates its forces, and hands back the loads for the next step. Without
+// sub-cycling, the fluid itself steps at the solid step whenever a contact is in reach (the
+// reference of C6).
+#pragma once
+
+#include <vector>
+
+#include "sluice/contact/multibody_system.hpp"
+#include "sluice/coupling/fluid_exchange.hpp"
+
+namespace sluice {
+
+class Coupler {
+ public:
+  // The first `bodies` bodies of `system` are the case's bodies (the rest are walls); `fluid`
+  // may be null (bodies alone). Both must outlive the coupler.
+  Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling);
+
+  // The step the coupled system takes when the fluid asks for `fluid_dt`.
+  double time_step(double fluid_dt);
+  // Advances the bodies by dt with the held loads, then hands the fluid their motion.
+  void advance_bodies(double dt);
+  // Takes the fluid's loads on the bodies, to hold over the next advance.
+  void collect_loads();
+
+  const std::vector<BodyKinematics>& motion() const { return motion_; }
+  // The fluid's force and moment (about the centre of mass) on each body, as held.
+  const std::vector<Vec3>& fluid_force() const { return fluid_force_; }
+  const std::vector<Vec3>& fluid_moment() const { return fluid_moment_; }
+  int most_substeps() const { return most_substeps_; }
+
+ private:
+  void update_motion(double dt);
+
+  MultibodySystem& system_;
+  std::size_t bodies_;
+  FluidExchange* fluid_;
+  bool subcycling_;
+  std::vector<BodyKinematics> motion_;
+  std::vector<Vec3> fluid_force_, fluid_moment_;
+  int most_substeps_ = 0;
+};
+
+}  // namespace sluice

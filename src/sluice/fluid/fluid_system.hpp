@@ -1,0 +1,67 @@
+// The interface of a fluid model, whatever its discretisation (particles, a grid): its stages,
+// the next stable step, the exchange with the bodies (coupling/fluid_exchange.hpp), its output
+// fields, probe queries, and the check for a run gone wrong. The engine (sim/) runs the step
+// as a list of stages; the coupler (coupling/) decides when bodies and fluid exchange.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sluice/core/stage.hpp"
+#include "sluice/coupling/fluid_exchange.hpp"
+#include "sluice/io/vtk_writer.hpp"
+
+namespace sluice {
+
+using StepStage = Stage<const StepClock>;
+using StageList = std::vector<std::unique_ptr<StepStage>>;
+
+struct FluidEnergy {
+  double kinetic = 0;
+  double potential = 0;  // relative to z = 0 along -g, as the bodies'
+};
+
+// How big the fluid is: its elements (particles or cells) and, of them, the fluid ones.
+struct FluidSize {
+  std::size_t elements = 0;
+  std::size_t fluid = 0;
+  std::size_t wall = 0;
+  std::size_t body = 0;
+};
+
+class FluidSystem : public FluidExchange {
+ public:
+  // One line with the model's resolved parameters, for `sluice check` and the run header.
+  virtual std::string describe() const = 0;
+  // The model's stages, in order: `before_bodies` run ahead of the bodies' advance (e.g.
+  // moving the particles), `after_bodies` after it (neighbours, forces, integration).
+  virtual void append_stages(StageList& before_bodies, StageList& after_bodies) = 0;
+  // The stable step for the next step, from the state after the last one.
+  virtual double next_time_step() const = 0;
+
+  // Output: the fluid as points with named arrays (docs/output.md).
+  virtual io::PolyFrame frame() const = 0;
+  // Probes: Shepard-averaged pressure at a point; height of the water column above the
+  // domain's floor on a vertical gauge at (x, y); the furthest fluid along an axis (0 = x,
+  // 1 = y).
+  virtual double pressure_at(const Vec3& x) const = 0;
+  virtual double water_height_at(const Vec3& gauge) const = 0;
+  virtual double surge_front(int axis) const = 0;
+
+  // What is wrong with the fluid, if anything (the message names the place).
+  virtual std::optional<std::string> check(const StepClock& clock) const = 0;
+  // Keeps the present state as the last good one, and its frame.
+  virtual void remember_good(double time) = 0;
+  virtual io::PolyFrame last_good_frame() const = 0;
+  virtual double last_good_time() const = 0;
+
+  virtual FluidSize size() const = 0;
+  virtual FluidEnergy energy() const = 0;
+  // The reach of the model's interactions (a particle model's support): walls are this thick,
+  // and a body this far outside the domain has left it.
+  virtual double interaction_radius() const = 0;
+};
+
+}  // namespace sluice

@@ -1,0 +1,53 @@
+#include "sluice/fluid/model_registry.hpp"
+
+#include <fmt/format.h>
+
+#include "sluice/fluid/body_particles.hpp"
+#include "sluice/fluid/wcsph/wcsph_factory.hpp"
+
+namespace sluice {
+
+std::vector<std::string> ModelRegistry::names() const {
+  std::vector<std::string> out;
+  for (const auto& entry : factories_) out.push_back(entry.first);
+  return out;
+}
+
+std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
+                                                 const BodyGeometry& bodies) const {
+  if (const auto found = factories_.find(config.model_name); found != factories_.end())
+    return found->second(config, bodies);
+  io::MapReader model(config.source, config.model, "model", config.model_line);
+  const std::vector<std::string> available = names();
+  std::string problem = fmt::format("unknown model '{}'; available: {}", config.model_name,
+                                    fmt::join(available, ", "));
+  const std::string guess = io::closest_match(config.model_name, available);
+  if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+  model.fail("name", problem);
+}
+
+template <int D>
+ModelRegistry shipped_models() {
+  ModelRegistry registry;
+  registry.add("wcsph", make_wcsph<D>);
+  return registry;
+}
+
+template <int D>
+std::unique_ptr<FluidSystem> make_fluid_system(const io::CaseConfig& config,
+                                               const BodyGeometry& bodies,
+                                               const ModelRegistry& models) {
+  if (!config.has_fluid()) return std::make_unique<BodyParticles<D>>(config, bodies);
+  return models.make(config, bodies);
+}
+
+template ModelRegistry shipped_models<2>();
+template ModelRegistry shipped_models<3>();
+template std::unique_ptr<FluidSystem> make_fluid_system<2>(const io::CaseConfig&,
+                                                           const BodyGeometry&,
+                                                           const ModelRegistry&);
+template std::unique_ptr<FluidSystem> make_fluid_system<3>(const io::CaseConfig&,
+                                                           const BodyGeometry&,
+                                                           const ModelRegistry&);
+
+}  // namespace sluice

@@ -1,0 +1,82 @@
+// The base of the particle models (wcsph today; mps and penalty-sph next): it owns the
+// particles and their neighbour grid, fills the fluid blocks, samples the walls in layers as
+// thick as the model's support and places particles in the bodies; it moves the body
+// particles with the bodies, sums the model's forces on them into loads, and answers output,
+// probes and the divergence check from the particles. A model adds its fields, its stages and
+// its forces on the body particles.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "sluice/coupling/body_geometry.hpp"
+#include "sluice/coupling/body_points.hpp"
+#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/fluid/particle_state.hpp"
+#include "sluice/io/case_config.hpp"
+
+namespace sluice {
+
+// Number of boundary-particle layers needed behind a wall for a given interaction radius.
+inline int wall_layers(Real interaction_radius, Real dx) {
+  return static_cast<int>(std::ceil(interaction_radius / dx - 1e-9));
+}
+
+template <int D>
+class ParticleFluid : public FluidSystem {
+ public:
+  // Builds the particles, sorted by cell: fluid (none inside walls or bodies), walls, and the
+  // bodies' particles (with `interaction_radius` > 0, layers under each body's surface; else
+  // its surface particles, for a case of bodies alone). Throws InputError when the case has
+  // fluid blocks but no fluid particle remains.
+  ParticleFluid(const io::CaseConfig& config, Real interaction_radius, const BodyGeometry& bodies);
+
+  ParticleState<D>& state() { return state_; }
+  const ParticleState<D>& state() const { return state_; }
+  const BodyPoints& body_points() const { return body_points_; }
+
+  // Called once after construction: the model's fields and what its first step needs.
+  virtual void initialize() = 0;
+
+  // Stages: the model's first stages; then, after the bodies' advance, the engine's neighbour
+  // sort and the model's other stages.
+  void append_stages(StageList& before_bodies, StageList& after_bodies) override;
+  void receive_body_motion(const std::vector<BodyKinematics>& motion) override;
+  std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override;
+
+  io::PolyFrame frame() const override { return frame_of(state_.particles); }
+  double pressure_at(const Vec3& x) const override;
+  double water_height_at(const Vec3& gauge) const override;
+  double surge_front(int axis) const override;
+  std::optional<std::string> check(const StepClock& clock) const override;
+  void remember_good(double time) override;
+  io::PolyFrame last_good_frame() const override { return frame_of(last_good_); }
+  double last_good_time() const override { return last_good_time_; }
+  FluidSize size() const override;
+  FluidEnergy energy() const override;
+  double interaction_radius() const override { return radius_; }
+
+ protected:
+  // The model's stages around the neighbour sort.
+  virtual void model_stages(StageList& before_neighbours, StageList& after_neighbours) = 0;
+  // The fluid's force on every body particle (kind kBody), indexed by its body point, from the
+  // last force evaluation. `force` has one entry per body point, zero on entry.
+  virtual void body_point_forces(std::vector<Vec3>& force) const = 0;
+
+ private:
+  io::PolyFrame frame_of(const ParticleSet<D>& particles) const;
+  // Whether a frame needs this field: those marked for output, the positions, and the body
+  // points (for the `body` array).
+  static bool shown(const FieldLabel& label);
+
+  Real radius_;
+  ParticleState<D> state_;
+  BodyPoints body_points_;
+  std::size_t body_count_ = 0;
+  std::vector<std::uint32_t> order_;  // scratch of the neighbour sort
+  ParticleSet<D> last_good_;
+  double last_good_time_ = 0;
+  bool holds_fields_ = false;
+};
+
+}  // namespace sluice

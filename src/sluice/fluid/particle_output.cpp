@@ -1,0 +1,113 @@
+// The particle base's output and its check for a run gone wrong.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "sluice/exec/policy.hpp"
+#include "sluice/fluid/particle_fluid.hpp"
+
+namespace sluice {
+
+template <int D>
+bool ParticleFluid<D>::shown(const FieldLabel& label) {
+  return label.output || label.name == "position" || label.name == "body_point";
+}
+
+// The particles as points, with every field marked for output as Float32 (vectors in 3D) or
+// Int32, and the body of each body particle.
+template <int D>
+io::PolyFrame ParticleFluid<D>::frame_of(const ParticleSet<D>& ps) const {
+  const std::size_t n = ps.size();
+  io::PolyFrame frame;
+  frame.points.resize(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 x = to_3d<D>(ps.position[i]);
+    for (int a = 0; a < 3; ++a) frame.points[3 * i + a] = static_cast<float>(x[a]);
+  }
+  ps.for_each_field([&](const FieldLabel& label, const auto& values) {
+    if (!label.output) return;
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    if constexpr (std::is_same_v<T, Vec<D>>) {
+      io::PointArrayF32 array{label.name, 3, std::vector<float>(3 * n)};
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 v = to_3d<D>(values[i]);
+        for (int a = 0; a < 3; ++a) array.values[3 * i + a] = static_cast<float>(v[a]);
+      }
+      frame.float_arrays.push_back(std::move(array));
+    } else if constexpr (std::is_floating_point_v<T>) {
+      io::PointArrayF32 array{label.name, 1, std::vector<float>(n)};
+      for (std::size_t i = 0; i < n; ++i) array.values[i] = static_cast<float>(values[i]);
+      frame.float_arrays.push_back(std::move(array));
+    } else {
+      io::PointArrayI32 array{label.name, std::vector<std::int32_t>(n)};
+      for (std::size_t i = 0; i < n; ++i) array.values[i] = static_cast<std::int32_t>(values[i]);
+      frame.int_arrays.push_back(std::move(array));
+    }
+  });
+  if (body_count_ > 0) {
+    io::PointArrayI32 body{"body", std::vector<std::int32_t>(n)};
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::int32_t k = ps.body_point[i];
+      body.values[i] = k < 0 ? -1 : static_cast<std::int32_t>(body_points_[k].body);
+    }
+    frame.int_arrays.push_back(std::move(body));
+  }
+  return frame;
+}
+
+namespace {
+template <int D>
+const char* problem_of(const ParticleState<D>& s, std::size_t i) {
+  const auto& ps = s.particles;
+  if (!ps.position[i].allFinite()) return "its position is not finite";
+  if (!ps.velocity[i].allFinite()) return "its velocity is not finite";
+  if (!std::isfinite(ps.density[i]) || !std::isfinite(ps.pressure[i])) {
+    return "its density or pressure is not finite";
+  }
+  if (ps.is_fluid(i) && !s.escape_box.contains(to_3d<D>(ps.position[i]), D))
+    return "it left the domain";
+  return nullptr;
+}
+}  // namespace
+
+template <int D>
+std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const {
+  // The first bad particle by index, found in parallel; the same on any thread count.
+  const double first = -exec::Default::max_of(state_.particles.size(), [&](std::size_t i) {
+    return problem_of(state_, i) ? -static_cast<double>(i)
+                                 : -std::numeric_limits<double>::infinity();
+  });
+  if (!std::isfinite(first)) return std::nullopt;
+  const auto i = static_cast<std::size_t>(first);
+  const Vec3 x = to_3d<D>(state_.particles.position[i]);
+  return fmt::format(
+      "the run diverged at step {}, t = {:.6g} s: particle {} at ({:.4g}, {:.4g}, "
+      "{:.4g}): {}",
+      clock.step, clock.time, i, x[0], x[1], x[2], problem_of(state_, i));
+}
+
+// What a frame shows, the model's fields marked for output included; the first time, a whole
+// copy that gives the set its fields.
+template <int D>
+void ParticleFluid<D>::remember_good(double time) {
+  if (!holds_fields_) {
+    last_good_ = state_.particles;
+    holds_fields_ = true;
+  }
+  last_good_.assign_fields(state_.particles, shown);
+  last_good_time_ = time;
+}
+
+// The class is instantiated in particle_fluid.cpp; these are its members defined here.
+template bool ParticleFluid<2>::shown(const FieldLabel&);
+template io::PolyFrame ParticleFluid<2>::frame_of(const ParticleSet<2>&) const;
+template std::optional<std::string> ParticleFluid<2>::check(const StepClock&) const;
+template void ParticleFluid<2>::remember_good(double);
+template bool ParticleFluid<3>::shown(const FieldLabel&);
+template io::PolyFrame ParticleFluid<3>::frame_of(const ParticleSet<3>&) const;
+template std::optional<std::string> ParticleFluid<3>::check(const StepClock&) const;
+template void ParticleFluid<3>::remember_good(double);
+
+}  // namespace sluice

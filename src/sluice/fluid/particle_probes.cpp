@@ -1,0 +1,71 @@
+// The particle base's probe queries.
+#include <cmath>
+
+#include "sluice/exec/policy.hpp"
+#include "sluice/fluid/particle_fluid.hpp"
+#include "sluice/kernels/wendland_c2.hpp"
+
+namespace sluice {
+
+// Shepard average of the fluid's pressure with a Wendland weight over the model's support;
+// zero where no fluid is within reach.
+template <int D>
+double ParticleFluid<D>::pressure_at(const Vec3& point) const {
+  const ParticleState<D>& s = state_;
+  const Vec<D> x = from_3d<D>(point);
+  const WendlandC2<D> kernel(radius_ / 2);
+  const auto& ps = s.particles;
+  Real sum_w = 0, sum_pw = 0;
+  s.cells.for_each_near(ps.position, x, radius_ * radius_,
+                        [&](std::size_t j, const Vec<D>&, Real r2) {
+                          if (!ps.is_fluid(j)) return;
+                          const Real w = kernel.value(std::sqrt(r2)) * ps.mass[j] / ps.density[j];
+                          sum_w += w;
+                          sum_pw += w * ps.pressure[j];
+                        });
+  return sum_w > 0 ? sum_pw / sum_w : 0;
+}
+
+// Height above the domain floor of the highest point of the gauge line where the fluid's
+// kernel-summed volume fraction is at least one half (isolated drops do not count).
+template <int D>
+double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
+  const ParticleState<D>& s = state_;
+  const WendlandC2<D> kernel(radius_ / 2);
+  const auto& ps = s.particles;
+  const Real floor = s.domain.min[2];
+  const Real step = 0.25 * s.spacing;
+  Real height = 0;
+  for (Real z = floor; z <= s.domain.max[2]; z += step) {
+    const Vec<D> x = from_3d<D>(Vec3(gauge[0], gauge[1], z));
+    Real fraction = 0;
+    s.cells.for_each_near(ps.position, x, radius_ * radius_,
+                          [&](std::size_t j, const Vec<D>&, Real r2) {
+                            if (ps.is_fluid(j))
+                              fraction += kernel.value(std::sqrt(r2)) * ps.mass[j] / ps.density[j];
+                          });
+    if (fraction >= 0.5) height = z - floor;
+  }
+  return height;
+}
+
+// Largest coordinate of the fluid along the axis, to the edge of the particle (+ dx/2).
+template <int D>
+double ParticleFluid<D>::surge_front(int axis3) const {
+  const ParticleState<D>& s = state_;
+  const int axis = (D == 2 && axis3 == 0) ? 0 : axis3;
+  const auto& ps = s.particles;
+  const Real front = exec::Default::max_of(
+      ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? ps.position[i][axis] : -1e300; });
+  return front + 0.5 * s.spacing;
+}
+
+// The class is instantiated in particle_fluid.cpp; these are its members defined here.
+template double ParticleFluid<2>::pressure_at(const Vec3&) const;
+template double ParticleFluid<2>::water_height_at(const Vec3&) const;
+template double ParticleFluid<2>::surge_front(int) const;
+template double ParticleFluid<3>::pressure_at(const Vec3&) const;
+template double ParticleFluid<3>::water_height_at(const Vec3&) const;
+template double ParticleFluid<3>::surge_front(int) const;
+
+}  // namespace sluice

@@ -1,0 +1,76 @@
+// The coupler's explicit co-simulation: the bodies advance with the fluid's last load held,
+// the fluid then receives their motion, and the loads it returns are held for the next step.
+#include "sluice/coupling/coupler.hpp"
+
+#include <gtest/gtest.h>
+
+#include "sluice/contact/contact_body_builder.hpp"
+
+namespace sluice {
+namespace {
+
+// A fluid that pushes every body up with a fixed force and remembers what it was told.
+class ConstantPush final : public FluidExchange {
+ public:
+  explicit ConstantPush(Vec3 force) : force_(force) {}
+  void receive_body_motion(const std::vector<BodyKinematics>& motion) override {
+    received = motion;
+    ++exchanges;
+  }
+  std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
+    return std::vector<Wrench>(motion.size(), Wrench{force_, Vec3::Zero()});
+  }
+  std::vector<BodyKinematics> received;
+  int exchanges = 0;
+
+ private:
+  Vec3 force_;
+};
+
+MultibodySystem one_free_block(double mass) {
+  MultibodySystem system(0.01, Vec3(0, 0, -10));
+  ContactBody block;
+  block.state.mass = mass;
+  block.state.position = Vec3(0, 0, 1);
+  system.add(std::move(block));
+  return system;
+}
+
+TEST(Coupler, HoldsTheLastLoadAndHandsOverTheMotion) {
+  MultibodySystem system = one_free_block(2.0);
+  ConstantPush fluid(Vec3(0, 0, 5));  // a quarter of the weight
+  Coupler coupler(system, 1, &fluid, true);
+  // First step: no load collected yet, so the block falls freely.
+  coupler.advance_bodies(0.1);
+  EXPECT_EQ(fluid.exchanges, 1);
+  EXPECT_NEAR(fluid.received[0].velocity[2], -1.0, 1e-12);
+  EXPECT_NEAR(fluid.received[0].acceleration[2], -10.0, 1e-12);
+  // Then the push is held: the block accelerates at -10 + 5 / 2.
+  coupler.collect_loads();
+  EXPECT_EQ(coupler.fluid_force()[0], Vec3(0, 0, 5));
+  coupler.advance_bodies(0.1);
+  EXPECT_NEAR(fluid.received[0].acceleration[2], -7.5, 1e-12);
+  EXPECT_NEAR(coupler.motion()[0].position[2], 1 - 0.05 - 0.1 - 0.0375, 1e-12);
+  EXPECT_EQ(coupler.most_substeps(), 1);
+}
+
+TEST(Coupler, WithoutSubCyclingTheFluidTakesTheSolidStep) {
+  // A ball resting on a floor: its contact needs steps far below a millisecond.
+  MultibodySystem system(0.01, Vec3(0, 0, -10));
+  const double radius = 0.05;
+  ContactBody ball =
+      make_contact_body(sample_sphere_body(radius, 0.01, 0, 3),
+                        sphere_mass_properties(radius, 1000.0), ContactMaterial{}, radius, false);
+  ball.spherical = true;
+  ball.state.position = Vec3(0, 0, radius);
+  system.add(std::move(ball));
+  system.add(make_floor_patch(0.2, 0.01, ContactMaterial{}));
+  ConstantPush fluid(Vec3::Zero());
+  Coupler cycled(system, 1, &fluid, true), lockstep(system, 1, &fluid, false);
+  EXPECT_EQ(cycled.time_step(1e-3), 1e-3);
+  EXPECT_LT(lockstep.time_step(1e-3), 0.5e-3);
+  EXPECT_EQ(lockstep.time_step(1e-3), system.solid_step(1e-3));
+}
+
+}  // namespace
+}  // namespace sluice

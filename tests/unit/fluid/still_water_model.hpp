@@ -1,0 +1,70 @@
+// "Still water": the smallest fluid model that plugs into sluice, written outside the engine
+// to show what a model implements (docs/adding-a-model.md walks through it). Its fluid stays
+// where the engine put it, at rest, with the hydrostatic pressure the engine gave it. It adds a
+// field of its own (the depth under the free surface, written in every frame), a stage that
+// updates it, and one parameter (its time step). It pushes no body: bodies fall through it.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <memory>
+
+#include "sluice/fluid/particle_fluid.hpp"
+#include "sluice/io/yaml_reader.hpp"
+
+namespace sluice::example {
+
+template <int D>
+class StillWater final : public ParticleFluid<D> {
+ public:
+  StillWater(const io::CaseConfig& config, const BodyGeometry& bodies, double time_step)
+      // Its particles interact with none: any radius will do; two spacings of wall suffice.
+      : ParticleFluid<D>(config, 2 * config.spacing, bodies),
+        time_step_(time_step),
+        rho_g_(config.fluid.density * config.gravity.norm()) {}
+
+  void initialize() override {
+    depth_ = this->state().particles.add_scalar_field({"depth", "m", true});
+    measure_depth();
+  }
+  std::string describe() const override {
+    return fmt::format("still_water: time step {} s", time_step_);
+  }
+  double next_time_step() const override { return time_step_; }
+
+ protected:
+  void model_stages(StageList&, StageList& after_neighbours) override {
+    after_neighbours.push_back(
+        make_stage<const StepClock>("depth", [this](const StepClock&) { measure_depth(); }));
+  }
+  void body_point_forces(std::vector<Vec3>&) const override {}  // no force on any body
+
+ private:
+  // p = rho g depth, so depth = p / (rho g).
+  void measure_depth() {
+    auto& ps = this->state().particles;
+    auto& depth = ps[depth_];
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      depth[i] = ps.is_fluid(i) ? ps.pressure[i] / rho_g_ : 0;
+  }
+
+  double time_step_;
+  double rho_g_;
+  FieldHandle<Real> depth_;
+};
+
+// The factory a registry holds: reads and checks the model's parameters, builds it ready to
+// step.
+template <int D>
+std::unique_ptr<FluidSystem> make_still_water(const io::CaseConfig& config,
+                                              const BodyGeometry& bodies) {
+  io::MapReader model(config.source, config.model, "model", config.model_line);
+  model.required<std::string>("name");
+  const double time_step = model.required_positive("time_step");
+  model.finish();  // unknown keys are errors
+  auto fluid = std::make_unique<StillWater<D>>(config, bodies, time_step);
+  fluid->initialize();
+  return fluid;
+}
+
+}  // namespace sluice::example
