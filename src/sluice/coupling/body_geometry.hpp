@@ -1,11 +1,13 @@
-// What a fluid may ask of the bodies' shapes when it builds its boundary: points fixed in each
-// body, layer by layer under its surface, and whether a place is taken by a body. The case's
-// bodies implement it (sim/rigid_bodies.hpp).
+// What a fluid may ask of the bodies' and walls' shapes: points fixed in each body, layer by
+// layer under its surface, and its surface particles (with normals and areas, as contact uses
+// them); whether a place is taken by a body; the signed distance, closest point and normal to
+// each body and to the walls. The case's bodies implement it (sim/rigid_bodies.hpp).
 #pragma once
 
 #include <vector>
 
 #include "sluice/coupling/body_motion.hpp"
+#include "sluice/geometry/signed_distance.hpp"
 
 namespace sluice {
 
@@ -21,8 +23,19 @@ class BodyGeometry {
   virtual std::vector<BodyPoint> points_under_surface(int layers) const = 0;
   // The surface particles that contact uses, on each body's faces.
   virtual std::vector<BodyPoint> surface_points() const = 0;
+  // Their outward normals (in the body's principal frame) and the areas they stand for, in
+  // the order of surface_points().
+  virtual std::vector<Vec3> surface_normals() const = 0;
+  virtual std::vector<double> surface_areas() const = 0;
   // Whether x lies inside a body or closer than `clearance` to its surface particles.
   virtual bool occupies(const Vec3& x, double clearance) const = 0;
+
+  // The nearest point of body b's surface to x (world), at the body's present pose: signed
+  // distance (< 0 inside), closest point and outward normal, in the world.
+  virtual SurfacePoint nearest_on_body(std::size_t b, const Vec3& x) const = 0;
+  // The nearest point of the walls to x: distance < 0 inside a wall's solid, the normal
+  // pointing out of the solid (infinite distance when there is no wall).
+  virtual SurfacePoint nearest_on_walls(const Vec3& x) const = 0;
 };
 
 }  // namespace sluice

@@ -1,7 +1,8 @@
 // Execution policies: the one place where loops are handed to threads. A loop body is written
-// once as a function of the index and run by a policy; no copy of a loop per backend. One
-// OpenMP thread is the serial reference (tests/physics/test_determinism.cpp); a GPU policy
-// would be another struct with the same members.
+// once as a function of the index and run by a policy; no copy of a loop per backend. Serial
+// is the reference; OpenMP gives the same answers on any number of threads
+// (tests/unit/exec, tests/physics/test_determinism.cpp); a GPU policy would be another struct
+// with the same members.
 #pragma once
 
 #include <algorithm>
@@ -35,6 +36,24 @@ struct OpenMP {
     const long count = static_cast<long>(n);
 #pragma omp parallel for schedule(static) reduction(max : result)
     for (long i = 0; i < count; ++i) result = std::max(result, value(static_cast<std::size_t>(i)));
+    return result;
+  }
+};
+
+// One thread, in index order: the reference the OpenMP policy must agree with.
+struct Serial {
+  template <class Body>
+  static void for_each(std::size_t n, Body&& body) {
+    for (std::size_t i = 0; i < n; ++i) body(i);
+  }
+  template <class Body>
+  static void for_each_balanced(std::size_t n, Body&& body) {
+    for_each(n, body);
+  }
+  template <class Value>
+  static double max_of(std::size_t n, Value&& value) {
+    double result = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) result = std::max(result, value(i));
     return result;
   }
 };

@@ -9,106 +9,12 @@
 
 #include "sluice/contact/contact_body_builder.hpp"
 #include "sluice/core/errors.hpp"
-#include "sluice/geometry/body_sampling.hpp"
-#include "sluice/rigid/mass_properties.hpp"
+#include "sluice/sim/body_shapes.hpp"
 #include "sluice/sim/prescribed_motion.hpp"
 
 namespace sluice {
 
 namespace {
-
-// A body's shape in its own frame: mass properties, the surface particles that contact uses,
-// and the particles the fluid sees. The fluid's boundary lies half a spacing outside its wall
-// particles, so those are sampled on the shape shrunk by dx/2 and below: the fluid then meets
-// the true surface. (A fixed wall's particles sit likewise half a spacing behind its face.)
-struct ShapeSample {
-  MassProperties mass;
-  BodySample surface;  // on the faces, with normals and areas (contact)
-  double contact_radius = 0;
-  bool flat_faces = true;
-  bool spherical = false;  // a sphere, or a disc in 2D
-};
-
-// The radius of the sphere (2D: the disc) with the body's volume: the Hertz radius of a body
-// with flat faces.
-double equivalent_radius(double volume, int dimension) {
-  return dimension == 2 ? std::sqrt(volume / std::numbers::pi)
-                        : std::cbrt(3 * volume / (4 * std::numbers::pi));
-}
-
-ShapeSample sample_shape(const io::BodyConfig& b, double dx, int dimension) {
-  ShapeSample out;
-  const double density = b.density > 0 ? b.density : 1.0;  // scaled to the mass below
-  switch (b.shape) {
-    case io::BodyShape::kBox: {
-      const Vec3 size = dimension == 2 ? Vec3(b.size[0], 1.0, b.size[2]) : b.size;
-      out.mass = box_mass_properties(size, density);
-      out.surface = sample_box_body(size, dx, 0, dimension);
-      out.contact_radius = equivalent_radius(out.mass.mass / density, dimension);
-      break;
-    }
-    case io::BodyShape::kSphere:
-    case io::BodyShape::kCylinder: {
-      const bool disc = dimension == 2;  // 2D: a circle, i.e. a cylinder along y, unit depth
-      const bool sphere = b.shape == io::BodyShape::kSphere && !disc;
-      if (sphere) {
-        out.mass = sphere_mass_properties(b.radius, density);
-        out.surface = sample_sphere_body(b.radius, dx, 0, 3);
-      } else {
-        const double length = disc ? 1.0 : b.length;
-        out.mass = cylinder_mass_properties(b.radius, length, density);
-        if (disc) std::swap(out.mass.inertia(1, 1), out.mass.inertia(2, 2));  // axis along y
-        out.surface = sample_cylinder_body(b.radius, length, dx, 0, dimension);
-      }
-      out.contact_radius = b.radius;
-      out.flat_faces = false;
-      out.spherical = sphere || disc;
-      break;
-    }
-    case io::BodyShape::kMesh: {
-      out.mass = mesh_mass_properties(b.mesh, density);
-      out.surface = sample_mesh_body(b.mesh, dx, 0);
-      out.contact_radius = equivalent_radius(out.mass.mass / density, 3);
-      break;
-    }
-  }
-  if (b.mass > 0) out.mass = with_mass(out.mass, b.mass);
-  return out;
-}
-
-// The points the fluid sees in a body, in the shape's frame: `layers` layers at depths dx/2,
-// 3 dx/2, ... (the shape shrunk by dx/2 and below; the fluid's boundary lies half a spacing
-// outside them, on the true surface).
-std::vector<Vec3> sample_under_surface(const io::BodyConfig& b, double dx, int layers,
-                                       int dimension) {
-  const double half = 0.5 * dx;
-  switch (b.shape) {
-    case io::BodyShape::kBox: {
-      const Vec3 size = dimension == 2 ? Vec3(b.size[0], 1.0, b.size[2]) : b.size;
-      const Vec3 inner = (size.array() - dx).cwiseMax(half).matrix();
-      return sample_box_body(inner, dx, layers - 1, dimension).position;
-    }
-    case io::BodyShape::kSphere:
-    case io::BodyShape::kCylinder: {
-      const bool disc = dimension == 2;
-      if (b.shape == io::BodyShape::kSphere && !disc)
-        return sample_sphere_body(std::max(b.radius - half, half), dx, layers - 1, 3).position;
-      const double length = disc ? 1.0 : b.length;
-      return sample_cylinder_body(std::max(b.radius - half, half), std::max(length - dx, half), dx,
-                                  layers - 1, dimension)
-          .position;
-    }
-    case io::BodyShape::kMesh: {
-      const BodySample all = sample_mesh_body(b.mesh, dx, layers);
-      std::vector<Vec3> out;
-      for (std::size_t k = 0; k < all.position.size(); ++k) {
-        if (all.layer[k] >= 1) out.push_back(all.position[k]);  // depth dx/2 and below
-      }
-      return out;
-    }
-  }
-  return {};
-}
 
 // The surface particle of `body` nearest to `local` (in the body's frame) and its distance;
 // the index is the particle count when the body has none.
@@ -151,6 +57,7 @@ void place(RigidBody& state, const ShapePose& pose, const Vec3& com,
 
 RigidBodies::RigidBodies(const io::CaseConfig& config)
     : configs_(config.bodies),
+      walls_(config.walls),
       spacing_(config.spacing),
       dimension_(config.dimension),
       system_(config.contact.distance, config.gravity, config.contact.substep_fraction) {
@@ -305,6 +212,24 @@ std::vector<BodyPoint> RigidBodies::surface_points() const {
   std::vector<BodyPoint> out;
   for (std::size_t b = 0; b < count(); ++b) {
     for (const Vec3& x : system_.shape(b).surface_position) out.push_back({b, x});
+  }
+  return out;
+}
+
+std::vector<Vec3> RigidBodies::surface_normals() const {
+  std::vector<Vec3> out;
+  for (std::size_t b = 0; b < count(); ++b) {
+    const auto& normals = system_.shape(b).surface_normal;
+    out.insert(out.end(), normals.begin(), normals.end());
+  }
+  return out;
+}
+
+std::vector<double> RigidBodies::surface_areas() const {
+  std::vector<double> out;
+  for (std::size_t b = 0; b < count(); ++b) {
+    const auto& areas = system_.shape(b).surface_area;
+    out.insert(out.end(), areas.begin(), areas.end());
   }
   return out;
 }

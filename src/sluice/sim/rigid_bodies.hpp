@@ -37,7 +37,11 @@ class RigidBodies final : public BodyGeometry {
   std::vector<BodyKinematics> motion() const override;
   std::vector<BodyPoint> points_under_surface(int layers) const override;
   std::vector<BodyPoint> surface_points() const override;
+  std::vector<Vec3> surface_normals() const override;
+  std::vector<double> surface_areas() const override;
   bool occupies(const Vec3& x, double clearance) const override;
+  SurfacePoint nearest_on_body(std::size_t b, const Vec3& x) const override;
+  SurfacePoint nearest_on_walls(const Vec3& x) const override;
 
  private:
   bool body_occupies(std::size_t b, const Vec3& x, double clearance) const;
@@ -45,6 +49,7 @@ class RigidBodies final : public BodyGeometry {
   double penetration(std::size_t a, std::size_t b) const;
 
   std::vector<io::BodyConfig> configs_;
+  std::vector<io::WallConfig> walls_;
   double spacing_;
   int dimension_;
   MultibodySystem system_;

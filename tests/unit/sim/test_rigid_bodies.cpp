@@ -65,5 +65,39 @@ TEST(RigidBodies, PrescribedBodyIsPlacedAtItsPose) {
   EXPECT_EQ(bodies.state(0).velocity, Vec3(0.5, 0, 0));
 }
 
+// Distance queries on a body turned 45 degrees about z, and on the tank's walls.
+TEST(RigidBodies, NearestSurfaceOfABodyAndOfTheWalls) {
+  const RigidBodies bodies(
+      case_with("  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.5, 0.5, 0.5], "
+                "rotation_deg: [0, 0, 45]}\n",
+                true));
+  // Along the turned face normal (1, 1, 0)/sqrt 2, 0.05 beyond the face.
+  const Vec3 n = Vec3(1, 1, 0).normalized();
+  const Vec3 x = Vec3(0.5, 0.5, 0.5) + 0.15 * n;
+  const SurfacePoint p = bodies.nearest_on_body(0, x);
+  EXPECT_NEAR(p.distance, 0.05, 1e-12);
+  EXPECT_NEAR((p.normal - n).norm(), 0, 1e-12);
+  EXPECT_NEAR((p.closest - (Vec3(0.5, 0.5, 0.5) + 0.1 * n)).norm(), 0, 1e-12);
+  EXPECT_NEAR(bodies.nearest_on_body(0, Vec3(0.5, 0.5, 0.52)).distance, -0.08, 1e-12);
+  // The tank [0, 1]^3, open at the top: the floor is nearest at z = 0.1, not the open lid.
+  const SurfacePoint floor = bodies.nearest_on_walls(Vec3(0.5, 0.4, 0.1));
+  EXPECT_NEAR(floor.distance, 0.1, 1e-12);
+  EXPECT_EQ(floor.normal, Vec3::UnitZ());
+  EXPECT_NEAR(bodies.nearest_on_walls(Vec3(0.5, 0.5, 0.97)).distance, 0.5, 1e-12);
+  EXPECT_NEAR(bodies.nearest_on_walls(Vec3(-0.02, 0.5, 0.5)).distance, -0.02, 1e-12);
+  // Surface samples with their normals and areas: a closed surface's n dA add up to zero.
+  const auto normals = bodies.surface_normals();
+  const auto areas = bodies.surface_areas();
+  ASSERT_EQ(normals.size(), bodies.surface_points().size());
+  Vec3 sum = Vec3::Zero();
+  double area = 0;
+  for (std::size_t k = 0; k < normals.size(); ++k) {
+    sum += areas[k] * normals[k];
+    area += areas[k];
+  }
+  EXPECT_NEAR(area, 6 * 0.04, 1e-12);
+  EXPECT_NEAR(sum.norm(), 0, 1e-12);
+}
+
 }  // namespace
 }  // namespace sluice

@@ -25,7 +25,8 @@ struct TaitEquation {
     return stiffness * (std::pow(ratio, gamma) - 1);
   }
 
-  // Inverse; pressures below -B (no density reaches them) map to a tiny positive density.
+  // Inverse. No density reaches a pressure of -B or below: there 1 + p/B is clamped to 1e-6
+  // (rho0 1e-6^(1/gamma): 139 kg/m^3 for gamma = 7), so the density stays finite and positive.
   Real density(Real p) const {
     return rho0 * std::pow(std::max(1 + p / stiffness, Real(1e-6)), 1 / gamma);
   }

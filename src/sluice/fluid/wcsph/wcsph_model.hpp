@@ -11,8 +11,10 @@
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
+#include "sluice/fluid/wcsph/adami_walls.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
+#include "sluice/fluid/wcsph/wcsph_pair_term.hpp"
 #include "sluice/fluid/wcsph/wcsph_parameters.hpp"
 
 namespace sluice {
@@ -156,108 +158,34 @@ class WcsphModel final : public ParticleFluid<D> {
     }
   }
 
-  // Adami, Hu & Adams (2012): wall pressure from the fluid around it, with the hydrostatic
-  // correction; wall density from the inverse equation of state; for no-slip, the wall's
-  // viscous velocity mirrors the fluid's Shepard-averaged velocity about the wall's own.
+  // The walls' pressure, density and viscous velocity from the fluid around them.
   void update_walls(ParticleState<D>& s) {
     pack(s, false);
-    auto& ps = s.particles;
-    auto& wall_velocity = ps[wall_velocity_];
-    const Vec3 g = to_3d<D>(s.gravity);
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t w) {
-      if (ps.is_fluid(w)) return;
-      WallSums sums;
-      s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
-        if (packed_.has_fluid(begin, end)) add_wall_sums(w, begin, end, sums);
-      });
-      if (sums.weight > 0) {
-        // A body's wall feels g - a_wall; a fixed wall does not accelerate.
-        Vec3 g_wall = g;
-        if (ps.body_point[w] >= 0) g_wall -= s.body_point_acceleration[ps.body_point[w]];
-        const Real hydrostatic =
-            g_wall[0] * sums.rho_r[0] + g_wall[1] * sums.rho_r[1] + g_wall[2] * sums.rho_r[2];
-        const Real p = (sums.pressure + hydrostatic) / sums.weight;
-        ps.pressure[w] = p;
-        ps.density[w] = eos_.density(p);
-        const Vec3 mean(sums.velocity[0], sums.velocity[1], sums.velocity[2]);
-        wall_velocity[w] = 2 * ps.velocity[w] - from_3d<D>(mean / sums.weight);
-      } else {
-        ps.pressure[w] = 0;
-        ps.density[w] = eos_.rho0;
-        wall_velocity[w] = ps.velocity[w];
-      }
-    });
+    update_adami_walls(s, packed_, kernel_, eos_, s.particles[wall_velocity_]);
   }
 
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
-  // neighbours j in compute_rates (the same pair terms, seen from the other side), so that the
-  // fluid and the bodies exchange equal and opposite forces.
+  // neighbours i, from the very pair term that gives the fluid's acceleration.
   void body_point_forces(std::vector<Vec3>& force) const override {
     const ParticleState<D>& s = this->state();
     const auto& ps = s.particles;
     const auto p = packed_.view();
-    const double h = kernel_.h, c0 = eos_.c0;
-    const double eta2 = 0.01 * h * h, two_alpha_c0_h = 2 * p_.artificial_viscosity * c0 * h;
-    const double two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
+    const WcsphPairConstants k = pair_constants(s);
+    const Real two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
     exec::Default::for_each(ps.size(), [&](std::size_t w) {
       if (ps.body_point[w] < 0) return;
       Vec3 f = Vec3::Zero();
       s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::size_t j = begin; j < end; ++j) {
-          if (p.fluid[j] == 0) continue;
-          const Vec3 r(p.x[j] - p.x[w], p.y[j] - p.y[w], p.z[j] - p.z[w]);  // r_jw
-          const double r2 = r.squaredNorm();
-          const double grad = kernel_.gradient_factor_branchless(static_cast<float>(std::sqrt(r2)));
-          if (grad == 0) continue;
-          const Vec3 u(p.vx[j] - p.wx[w], p.vy[j] - p.wy[w], p.vz[j] - p.wz[w]);  // viscous v_jw
-          const double inverse_r2 = 1 / (r2 + eta2);
-          const double artificial = -two_alpha_c0_h * std::min(u.dot(r), 0.0) * inverse_r2 /
-                                    (p.density[j] + p.density[w]);
-          const double push =
-              double(p.density[w]) * p.volume[w] *
-              (p.pressure_term[j] + p.pressure_term[w] + p.viscous_weight[w] * artificial) * grad;
-          const double laminar = p.viscous_weight[w] * p.volume[w] * two_nu_rho0 / p.density[j] *
-                                 r2 * grad * inverse_r2;
-          f -= ps.mass[j] * (laminar * u - push * r);  // minus m_j a_j(w)
+        for (std::size_t i = begin; i < end; ++i) {
+          if (p.fluid[i] == 0) continue;
+          const auto own = own_particle(p, i, static_cast<float>(two_nu_rho0 / ps.density[i]));
+          float ax = 0, ay = 0, az = 0, drho = 0;
+          add_wcsph_pair_term(p, own, w, k, kernel_, ax, ay, az, drho);
+          f -= ps.mass[i] * Vec3(ax, ay, az);  // minus m_i a_i(w)
         }
       });
       force[ps.body_point[w]] = f;
     });
-  }
-
-  struct WallSums {
-    double weight = 0, pressure = 0;
-    std::array<double, 3> rho_r{}, velocity{};
-  };
-
-  // Kernel-weighted sums over the fluid particles in [begin, end) around wall particle w.
-  void add_wall_sums(std::size_t w, std::uint32_t begin, std::uint32_t end, WallSums& out) const {
-    const auto p = packed_.view();
-    const float xw = p.x[w], yw = p.y[w], zw = p.z[w];
-    float sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0;
-#pragma omp simd reduction(+ : sw, sp, srx, sry, srz, svx, svy, svz)
-    for (std::size_t f = begin; f < end; ++f) {
-      const float rx = xw - p.x[f], ry = yw - p.y[f], rz = zw - p.z[f];
-      const float weight =
-          p.fluid[f] * kernel_.value_branchless(std::sqrt(rx * rx + ry * ry + rz * rz));
-      const float rho_weight = p.density[f] * weight;
-      sw += weight;
-      sp += p.pressure[f] * weight;
-      srx += rho_weight * rx;
-      sry += rho_weight * ry;
-      srz += rho_weight * rz;
-      svx += weight * p.vx[f];
-      svy += weight * p.vy[f];
-      svz += weight * p.vz[f];
-    }
-    out.weight += sw;
-    out.pressure += sp;
-    out.rho_r[0] += srx;
-    out.rho_r[1] += sry;
-    out.rho_r[2] += srz;
-    out.velocity[0] += svx;
-    out.velocity[1] += svy;
-    out.velocity[2] += svz;
   }
 
   // Continuity with density diffusion and the momentum equation, gathered per fluid particle
@@ -267,17 +195,8 @@ class WcsphModel final : public ParticleFluid<D> {
     auto& ps = s.particles;
     auto& acceleration = ps[acceleration_];
     auto& density_rate = ps[density_rate_];
-    const Real h = kernel_.h;
-    const Real c0 = eos_.c0;
-    PairConstants k;
-    k.eta2 = static_cast<float>(0.01 * h * h);
-    k.two_alpha_c0_h = static_cast<float>(2 * p_.artificial_viscosity * c0 * h);
-    // Molteni & Colagrossi (2009) diffusion, with the hydrostatic part of the density
-    // difference removed (Fourtakas et al. 2019), linearised: rho_H_ji = rho0 g.r_ji / c0^2.
-    k.diffusion = static_cast<float>(-2 * p_.density_diffusion * h * c0);
+    const WcsphPairConstants k = pair_constants(s);
     const Vec3 g = to_3d<D>(s.gravity);
-    for (int a = 0; a < 3; ++a)
-      k.hydrostatic[a] = static_cast<float>(-(eos_.rho0 / (c0 * c0)) * g[a]);
     const Real two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
     exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;
@@ -292,51 +211,35 @@ class WcsphModel final : public ParticleFluid<D> {
     });
   }
 
-  struct PairConstants {
-    float eta2 = 0, two_alpha_c0_h = 0, diffusion = 0;
-    std::array<float, 3> hydrostatic{};  // rho_H_ji = hydrostatic . r_ij
-  };
+  WcsphPairConstants pair_constants(const ParticleState<D>& s) const {
+    const Real h = kernel_.h;
+    const Real c0 = eos_.c0;
+    WcsphPairConstants k;
+    k.eta2 = static_cast<float>(0.01 * h * h);
+    k.two_alpha_c0_h = static_cast<float>(2 * p_.artificial_viscosity * c0 * h);
+    // Molteni & Colagrossi (2009) diffusion, with the hydrostatic part of the density
+    // difference removed (Fourtakas et al. 2019), linearised: rho_H_ji = rho0 g.r_ji / c0^2.
+    k.diffusion = static_cast<float>(-2 * p_.density_diffusion * h * c0);
+    const Vec3 g = to_3d<D>(s.gravity);
+    for (int a = 0; a < 3; ++a)
+      k.hydrostatic[a] = static_cast<float>(-(eos_.rho0 / (c0 * c0)) * g[a]);
+    return k;
+  }
+
   struct Rates {
     std::array<double, 3> acceleration{};
     double density = 0;
   };
 
-  // The pair terms of fluid particle i with the candidates [begin, end), without branches:
-  // the kernel vanishes beyond its support, and i itself adds exactly zero (every term
-  // carries r_ij or rho_j - rho_i), so the loop runs as SIMD over the whole range.
-  void add_rates(std::size_t i, std::uint32_t begin, std::uint32_t end, const PairConstants& k,
+  // The pair terms of fluid particle i with the candidates [begin, end), as SIMD.
+  void add_rates(std::size_t i, std::uint32_t begin, std::uint32_t end, const WcsphPairConstants& k,
                  float laminar_i, Rates& out) const {
     const auto p = packed_.view();
-    const float xi = p.x[i], yi = p.y[i], zi = p.z[i];
-    const float vxi = p.vx[i], vyi = p.vy[i], vzi = p.vz[i];
-    const float rho_i = p.density[i], pressure_term_i = p.pressure_term[i];
-    const float hx = k.hydrostatic[0], hy = k.hydrostatic[1], hz = k.hydrostatic[2];
+    const WcsphOwnParticle own = own_particle(p, i, laminar_i);
     float ax = 0, ay = 0, az = 0, drho = 0;
 #pragma omp simd reduction(+ : ax, ay, az, drho)
-    for (std::size_t j = begin; j < end; ++j) {
-      const float rx = xi - p.x[j], ry = yi - p.y[j], rz = zi - p.z[j];
-      const float r2 = rx * rx + ry * ry + rz * rz;
-      const float v_dot_r = (vxi - p.vx[j]) * rx + (vyi - p.vy[j]) * ry + (vzi - p.vz[j]) * rz;
-      const float ux = vxi - p.wx[j], uy = vyi - p.wy[j], uz = vzi - p.wz[j];  // viscous v_ij
-      const float u_dot_r = ux * rx + uy * ry + uz * rz;
-      const float f = kernel_.gradient_factor_branchless(std::sqrt(r2));
-      const float volume_j = p.volume[j];
-      const float rho_j = p.density[j];
-      const float inverse_r2 = 1.0f / (r2 + k.eta2);
-      const float hydro = hx * rx + hy * ry + hz * rz;
-      drho += rho_j * volume_j * f * v_dot_r  // m_j v_ij . grad W
-              + p.fluid[j] * k.diffusion * (rho_j - rho_i - hydro) * f * volume_j;
-      // Monaghan's Pi_ij, acting only while the particles approach.
-      const float artificial =
-          -k.two_alpha_c0_h * std::min(u_dot_r, 0.0f) * inverse_r2 / (rho_i + rho_j);
-      const float push = rho_j * volume_j *
-                         (pressure_term_i + p.pressure_term[j] + p.viscous_weight[j] * artificial) *
-                         f;
-      const float laminar = p.viscous_weight[j] * volume_j * laminar_i * r2 * f * inverse_r2;
-      ax += laminar * ux - push * rx;
-      ay += laminar * uy - push * ry;
-      az += laminar * uz - push * rz;
-    }
+    for (std::size_t j = begin; j < end; ++j)
+      add_wcsph_pair_term(p, own, j, k, kernel_, ax, ay, az, drho);
     out.acceleration[0] += ax;
     out.acceleration[1] += ay;
     out.acceleration[2] += az;

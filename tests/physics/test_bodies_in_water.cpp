@@ -1,0 +1,154 @@
+// The rigid-body checks of VALIDATION.md with fluid, and C2, run from the shipped case files
+// (cases/), in process: C2, B1 to B3.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "physics_support.hpp"
+
+namespace sluice {
+namespace {
+
+using testing::load_case;
+using testing::run_until;
+
+// Total energy: fluid kinetic and potential, bodies' kinetic and potential, contact springs.
+template <int D>
+double total_energy(const Simulation<D>& sim) {
+  const auto& ps = sim.state().particles;
+  double e = sim.bodies().system().energy().total();
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (!ps.is_fluid(i)) continue;
+    e +=
+        ps.mass[i] * (0.5 * ps.velocity[i].squaredNorm() - sim.state().gravity.dot(ps.position[i]));
+  }
+  return e;
+}
+
+// C2: an elastic sphere hits the floor: contact time and peak overlap as Hertz's.
+TEST(CaseHertzImpact, ContactTimeAndPeakOverlap) {
+  Simulation<3> sim(testing::load_case("hertz_impact.yaml"));
+  const auto& bodies = sim.bodies();
+  const double radius = 0.1, v0 = 1.0;
+  const double mass = bodies.state(0).mass;
+  const double young = 1 / ((1 - 0.09) / 1e8 + (1 - 0.09) / 200e9);  // sphere and wall
+  const double t_c = 2.868 * std::pow(mass * mass / (radius * young * young * v0), 0.2);
+  const double peak = std::pow(15 * mass * v0 * v0 / (16 * young * std::sqrt(radius)), 0.4);
+  double first = -1, last = -1, deepest = 0;
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock& s) {
+    if (bodies.system().contact_force()[0].norm() > 0) {
+      if (first < 0) first = s.time;
+      last = s.time;
+    }
+    deepest = std::max(deepest, radius - bodies.state(0).position[2]);
+  });
+  const double duration = last - first + sim.config().body_interval;
+  std::printf("C2 (case): contact %.4f ms (Hertz %.4f), peak overlap %.4f mm (Hertz %.4f)\n",
+              1e3 * duration, 1e3 * t_c, 1e3 * deepest, 1e3 * peak);
+  EXPECT_NEAR(duration, t_c, 0.05 * t_c);
+  EXPECT_NEAR(deepest, peak, 0.05 * peak);
+}
+
+// B1: the floating box settles at a draft of 0.70 m within 3 %, without drifting sideways.
+// The draft follows from the water's area (conserved) and the box's height: with water level h,
+// 3 h = A + 1 d and d = h - (z - 0.5). The mean is taken over the last two heave periods.
+TEST(CaseFloatingBox, DraftByArchimedes) {
+  Simulation<2> sim(testing::load_case("floating_box_2d.yaml"));
+  const double dx = sim.config().spacing;
+  const double area = static_cast<double>(sim.state().fluid_count) * dx * dx;
+  const double x0 = sim.bodies().state(0).position[0];
+  double sum = 0, drift = 0;
+  long samples = 0;
+  const double end = sim.config().end_time;
+  testing::run_until(sim, end, [&](const StepClock& s) {
+    const Vec3& x = sim.bodies().state(0).position;
+    drift = std::max(drift, std::abs(x[0] - x0));
+    if (s.time > end - 4.0) {
+      sum += (area / 3 - x[2] + 0.5) / (1 - 1.0 / 3);
+      ++samples;
+    }
+  });
+  const double draft = sum / samples;
+  std::printf("B1 (case): mean draft %.4f m (Archimedes 0.70, %.2f %%), sideways drift %.3g mm\n",
+              draft, 100 * (draft - 0.7) / 0.7, 1e3 * drift);
+  EXPECT_NEAR(draft, 0.7, 0.03 * 0.7);
+  EXPECT_LT(drift, 0.01);
+}
+
+// B2: the heavy cube sinks and rests on the floor, never passing through it.
+TEST(CaseFallingCube, SinksAndRestsOnTheFloor) {
+  Simulation<3> sim(testing::load_case("falling_cube.yaml", {"end_time=0.4"}));
+  const double half = 0.01, dx = sim.config().spacing;
+  double lowest = 1;
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock&) {
+    lowest = std::min(lowest, sim.bodies().state(0).position[2] - half);
+  });
+  const auto& s = sim.bodies().state(0);
+  std::printf("B2 (case): cube bottom at %.3g mm at the end, lowest %.3g mm, speed %.3g mm/s\n",
+              1e3 * (s.position[2] - half), 1e3 * lowest, 1e3 * s.velocity.norm());
+  EXPECT_GT(lowest, -0.1 * dx);
+  EXPECT_LT(s.position[2] - half, 0.1 * dx);
+  EXPECT_LT(s.velocity.norm(), 0.01);
+}
+
+// B2: the light block floats: it never touches the floor and keeps its draft near Archimedes'.
+TEST(CaseFloatingBlock, Floats) {
+  Simulation<3> sim(testing::load_case("floating_block.yaml", {"spacing=0.005", "end_time=0.3"}));
+  const double half_height = 0.012, water = 0.052, archimedes = 0.80052 * 0.024;
+  double lowest = 1, sum = 0;
+  long samples = 0;
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock& s) {
+    const double bottom = sim.bodies().state(0).position[2] - half_height;
+    lowest = std::min(lowest, bottom);
+    if (s.time > 0.5 * sim.config().end_time) {
+      sum += water - bottom;  // the water level rises by under 2 % of the draft: ignored
+      ++samples;
+    }
+  });
+  const double draft = sum / samples;
+  std::printf(
+      "B2 (case): block lowest bottom %.3g mm above the floor, mean draft %.4g mm "
+      "(Archimedes %.4g)\n",
+      1e3 * lowest, 1e3 * draft, 1e3 * archimedes);
+  EXPECT_GT(lowest, 0.25 * water);
+  EXPECT_NEAR(draft, archimedes, 0.1 * archimedes);
+}
+
+// B3: dam break on six cubes at a coarse spacing to 1.5 s: no interpenetration beyond a tenth of
+// the spacing, no body leaves the tank, the total energy never grows (beyond 0.5 % of the
+// start, which the weakly compressible fluid's elastic energy, not counted here, can exchange).
+TEST(CaseDamBreakCubes, SixCubesStaySound) {
+  Simulation<3> sim(testing::load_case("dam_break_cubes_6.yaml", {"spacing=0.05", "end_time=1.5"}));
+  const double dx = sim.config().spacing;
+  const double start = total_energy(sim);
+  double lowest = start, worst_rise = 0, moved = 0;
+  bool inside = true;
+  const auto& tank = sim.config().walls[0].box;
+  std::vector<Vec3> initial;
+  for (std::size_t b = 0; b < sim.bodies().count(); ++b)
+    initial.push_back(sim.bodies().state(b).position);
+  testing::run_until(sim, sim.config().end_time, [&](const StepClock&) {
+    const double e = total_energy(sim);
+    worst_rise = std::max(worst_rise, e - lowest);
+    lowest = std::min(lowest, e);
+    for (std::size_t b = 0; b < sim.bodies().count(); ++b) {
+      inside = inside && tank.contains(sim.bodies().state(b).position, 3);
+    }
+  });
+  for (std::size_t b = 0; b < sim.bodies().count(); ++b)
+    moved = std::max(moved, (sim.bodies().state(b).position - initial[b]).norm());
+  const double overlap = sim.bodies().system().deepest_overlap_ever();
+  std::printf(
+      "B3 (case): deepest overlap %.3g mm (%.3g dx), largest energy rise %.3g %% of the "
+      "start, energy %.1f -> %.1f J, largest body displacement %.3g m\n",
+      1e3 * overlap, overlap / dx, 100 * worst_rise / start, start, total_energy(sim), moved);
+  EXPECT_LT(overlap, 0.1 * dx);
+  EXPECT_TRUE(inside);
+  EXPECT_LT(worst_rise, 0.005 * start);
+}
+
+}  // namespace
+}  // namespace sluice

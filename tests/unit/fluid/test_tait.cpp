@@ -1,0 +1,39 @@
+// The Tait equation of state and its inverse.
+#include "sluice/fluid/wcsph/tait.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sluice {
+namespace {
+
+TEST(Tait, InverseReturnsTheDensity) {
+  for (double gamma : {7.0, 1.0, 3.5}) {
+    const TaitEquation eos(1000, 30, gamma);
+    EXPECT_EQ(eos.pressure(1000), 0) << gamma;
+    for (double rho : {980.0, 999.9, 1000.0, 1003.0, 1050.0}) {
+      EXPECT_NEAR(eos.density(eos.pressure(rho)), rho, 1e-9 * rho) << gamma << " " << rho;
+    }
+  }
+}
+
+TEST(Tait, StiffnessAndSoundSpeed) {
+  const TaitEquation eos(1000, 30, 7);
+  EXPECT_DOUBLE_EQ(eos.stiffness, 30.0 * 30 * 1000 / 7);
+  // dp/drho at rest is c0^2.
+  const double h = 1e-4;
+  EXPECT_NEAR((eos.pressure(1000 + h) - eos.pressure(1000 - h)) / (2 * h), 900, 1e-4);
+  // Gamma 7 uses the product form; it agrees with the power.
+  EXPECT_NEAR(eos.pressure(1010), eos.stiffness * (std::pow(1.01, 7) - 1), 1e-9);
+}
+
+TEST(Tait, TensionBeyondTheEquationIsClamped) {
+  const TaitEquation eos(1000, 30, 7);
+  const double clamped = 1000 * std::pow(1e-6, 1.0 / 7);  // 139 kg/m^3
+  EXPECT_DOUBLE_EQ(eos.density(-2 * eos.stiffness), clamped);
+  EXPECT_DOUBLE_EQ(eos.density(-eos.stiffness), clamped);
+}
+
+}  // namespace
+}  // namespace sluice
