@@ -1,17 +1,14 @@
 #include "sluice/contact/multibody_system.hpp"
 
+#include "sluice/contact/contact_solvers.hpp"
+
 namespace sluice {
 
-namespace {
-std::unique_ptr<PenaltyContactSolver> penalty_solver(Vec3 gravity, double substep_fraction) {
-  return std::make_unique<PenaltyContactSolver>(gravity, substep_fraction);
-}
-}  // namespace
-
-MultibodySystem::MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction)
+MultibodySystem::MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction,
+                                 const std::string& solver_name)
     : rigid_(gravity) {
-  auto solver = penalty_solver(gravity, substep_fraction);
-  penalty_ = solver.get();
+  auto solver = shipped_contact_solvers().make(solver_name, {gravity, substep_fraction});
+  penalty_ = dynamic_cast<const PenaltyContactSolver*>(solver.get());
   contact_ = std::make_unique<ContactPipeline>(contact_distance, std::move(solver));
   rigid_.set_interaction(contact_.get());
 }

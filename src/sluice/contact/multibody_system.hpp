@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sluice/contact/contact_body.hpp"
@@ -17,7 +18,9 @@ class MultibodySystem {
  public:
   // contact_distance: particle pairs closer than this are examined (about the spacing).
   // substep_fraction: solid step = this fraction of the shortest contact period (1/20-1/50).
-  MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction = 1.0 / 30);
+  // solver: a name in shipped_contact_solvers().
+  MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction = 1.0 / 30,
+                  const std::string& solver = "penalty");
 
   std::size_t add(ContactBody body);
 
@@ -39,8 +42,8 @@ class MultibodySystem {
   // Contact force and torque (about the centre of mass) on each body from the last sub-step.
   const std::vector<Vec3>& contact_force() const { return rigid_.interaction_force(); }
   const std::vector<Vec3>& contact_torque() const { return rigid_.interaction_torque(); }
-  // The deepest overlap at any sub-step so far.
-  double deepest_overlap_ever() const { return penalty_->deepest_overlap_ever(); }
+  // The deepest overlap at any sub-step so far (penalty solver; 0 for another).
+  double deepest_overlap_ever() const { return penalty_ ? penalty_->deepest_overlap_ever() : 0; }
   long substeps_taken() const { return rigid_.substeps_taken(); }
 
  private:

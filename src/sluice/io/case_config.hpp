@@ -59,7 +59,8 @@ struct ProbeConfig {
 // sub-step is `substep_fraction` of the shortest contact period. Without sub-cycling the fluid
 // itself steps at the solid step whenever a contact is in reach (for comparisons, C6).
 struct ContactConfig {
-  double distance = 0;  // default: the particle spacing
+  std::string solver = "penalty";  // a name in shipped_contact_solvers()
+  double distance = 0;             // default: the particle spacing
   double substep_fraction = 1.0 / 30;
   bool subcycling = true;
 };

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sluice/contact/contact_solvers.hpp"
 #include "sluice/io/body_reader.hpp"
 #include "sluice/io/case_config.hpp"
 
@@ -176,6 +177,15 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   c.body_interval = top.optional_positive("body_interval", c.probe_interval);
   if (top.has("contact")) {
     MapReader contact = top.map("contact");
+    c.contact.solver = contact.optional<std::string>("solver", c.contact.solver);
+    const std::vector<std::string> solvers = shipped_contact_solvers().names();
+    if (std::find(solvers.begin(), solvers.end(), c.contact.solver) == solvers.end()) {
+      std::string problem = fmt::format("unknown contact solver '{}'; available: {}",
+                                        c.contact.solver, fmt::join(solvers, ", "));
+      const std::string guess = closest_match(c.contact.solver, solvers);
+      if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+      contact.fail("solver", problem);
+    }
     c.contact.distance = contact.optional_positive("distance", c.spacing);
     c.contact.substep_fraction =
         contact.optional_positive("substep_fraction", c.contact.substep_fraction);

@@ -60,7 +60,8 @@ RigidBodies::RigidBodies(const io::CaseConfig& config)
       walls_(config.walls),
       spacing_(config.spacing),
       dimension_(config.dimension),
-      system_(config.contact.distance, config.gravity, config.contact.substep_fraction) {
+      system_(config.contact.distance, config.gravity, config.contact.substep_fraction,
+              config.contact.solver) {
   const double dx = config.spacing;
   const int dimension = config.dimension;
   std::vector<std::string> names;
