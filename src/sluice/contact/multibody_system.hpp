@@ -25,10 +25,11 @@ class MultibodySystem {
   std::size_t add(ContactBody body);
 
   // Advances by dt. `force` and `torque` (one per body, may be empty) are held over the
-  // sub-steps, as the fluid's force is. Returns the number of sub-steps taken.
-  int advance(double dt, const std::vector<Vec3>& force = {},
-              const std::vector<Vec3>& torque = {}) {
-    return rigid_.advance(dt, force, torque);
+  // sub-steps, as the fluid's force is; `rows` (may be null) are velocity constraints solved
+  // at every sub-step (RigidSystem::advance). Returns the number of sub-steps taken.
+  int advance(double dt, const std::vector<Vec3>& force = {}, const std::vector<Vec3>& torque = {},
+              std::vector<ConstraintRow>* rows = nullptr) {
+    return rigid_.advance(dt, force, torque, rows);
   }
   // The solid step that the contacts in reach during a coming step of dt need: a
   // `substep_fraction` of the shortest contact period among them; dt when none is in reach.

@@ -38,7 +38,11 @@ void Coupler::update_motion(double dt) {
 }
 
 void Coupler::advance_bodies(double dt) {
-  most_substeps_ = std::max(most_substeps_, system_.advance(dt, fluid_force_, fluid_moment_));
+  rows_.clear();
+  if (fluid_ && fluid_->scheme() == CouplingScheme::kMonolithic)
+    fluid_->body_constraints(motion_, rows_);
+  most_substeps_ =
+      std::max(most_substeps_, system_.advance(dt, fluid_force_, fluid_moment_, &rows_));
   update_motion(dt);
   if (fluid_) fluid_->receive_body_motion(motion_);
 }

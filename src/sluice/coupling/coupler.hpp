@@ -1,9 +1,11 @@
-// The order of the exchanges between a fluid and the rigid bodies: explicit co-simulation
-// (seed 000). In each fluid step the bodies advance first, over as many solid sub-steps as
+// The order of the exchanges between a fluid and the rigid bodies. Explicit co-simulation
+// (seed 000): in each fluid step the bodies advance first, over as many solid sub-steps as
 // their contacts need, with the fluid's last load held; the fluid then sees the bodies where
 // they now are, evaluates its forces, and hands back the loads for the next step. Without
 // sub-cycling, the fluid itself steps at the solid step whenever a contact is in reach (the
-// reference of C6).
+// reference of C6). Monolithic (a fluid whose scheme says so): before the bodies advance, the
+// fluid contributes velocity constraints, which the bodies' solver meets at every sub-step
+// together with the loads.
 #pragma once
 
 #include <vector>
@@ -31,6 +33,8 @@ class Coupler {
   const std::vector<Vec3>& fluid_force() const { return fluid_force_; }
   const std::vector<Vec3>& fluid_moment() const { return fluid_moment_; }
   int most_substeps() const { return most_substeps_; }
+  // The monolithic scheme's rows of the last step, with their impulses (per sub-step).
+  const std::vector<ConstraintRow>& constraints() const { return rows_; }
 
  private:
   void update_motion(double dt);
@@ -41,6 +45,7 @@ class Coupler {
   bool subcycling_;
   std::vector<BodyKinematics> motion_;
   std::vector<Vec3> fluid_force_, fluid_moment_;
+  std::vector<ConstraintRow> rows_;
   int most_substeps_ = 0;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sluice/rigid/constraint_solver.hpp"
 #include "sluice/rigid/rigid_integrator.hpp"
 
 namespace sluice {
@@ -24,8 +25,8 @@ double RigidSystem::solid_step(double dt) {
   return interaction_ ? interaction_->stable_step(bodies_, dt) : dt;
 }
 
-int RigidSystem::advance(double dt, const std::vector<Vec3>& force,
-                         const std::vector<Vec3>& torque) {
+int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
+                         std::vector<ConstraintRow>* rows) {
   const int substeps = static_cast<int>(std::ceil(dt / solid_step(dt) - 1e-9));
   const double h = dt / substeps;
   const std::size_t n = bodies_.size();
@@ -44,9 +45,13 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force,
   for (int s = 0; s < substeps; ++s) {
     for (std::size_t b = 0; b < n; ++b) {
       if (bodies_[b].prescribed) bodies_[b].prescribed(time_ + (s + 1) * h, bodies_[b].state);
-      if (bodies_[b].fixed) continue;
-      kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
-      drift(bodies_[b].state, h);
+      if (!bodies_[b].fixed) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
+    }
+    // Velocity constraints act on the velocity the bodies drift with, so that they hold the
+    // positions too.
+    if (rows && !rows->empty()) solve_constraints(bodies_, *rows);
+    for (std::size_t b = 0; b < n; ++b) {
+      if (!bodies_[b].fixed) drift(bodies_[b].state, h);
     }
     // The dashpots see the velocities predicted to the end of the sub-step (with the forces
     // of the last evaluation), not the half-step ones, which would lag by h/2.

@@ -1,13 +1,15 @@
 // The rigid bodies of a run, advanced together (seed 000's solid sub-cycling): a step of the
 // caller (the fluid's) is split into as many solid sub-steps as the stiffest interaction
 // between bodies needs; with none it is one step. Forces from outside (the fluid's) are held
-// over the sub-steps; the interaction between the bodies (contact) is evaluated at each.
+// over the sub-steps; the interaction between the bodies (contact) is evaluated at each, and
+// velocity constraints (a monolithic coupling's) are solved in each.
 #pragma once
 
 #include <functional>
 #include <vector>
 
 #include "sluice/rigid/body_interaction.hpp"
+#include "sluice/rigid/constraint_row.hpp"
 #include "sluice/rigid/rigid_body.hpp"
 
 namespace sluice {
@@ -28,8 +30,11 @@ class RigidSystem {
   void set_interaction(BodyInteraction* interaction) { interaction_ = interaction; }
 
   // Advances by dt. `force` and `torque` (one per body, may be empty) are held over the
-  // sub-steps. Returns the number of sub-steps taken.
-  int advance(double dt, const std::vector<Vec3>& force = {}, const std::vector<Vec3>& torque = {});
+  // sub-steps. `rows` (may be null) are velocity constraints solved together in every
+  // sub-step, on the velocity the bodies drift with (after the first half kick), warm-started
+  // from the last sub-step's impulses. Returns the number of sub-steps taken.
+  int advance(double dt, const std::vector<Vec3>& force = {}, const std::vector<Vec3>& torque = {},
+              std::vector<ConstraintRow>* rows = nullptr);
   // The sub-step the interaction needs over a coming step of dt (dt when it needs none shorter).
   double solid_step(double dt);
 

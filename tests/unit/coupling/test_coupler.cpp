@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "sluice/contact/contact_body_builder.hpp"
 
 namespace sluice {
@@ -70,6 +73,51 @@ TEST(Coupler, WithoutSubCyclingTheFluidTakesTheSolidStep) {
   EXPECT_EQ(cycled.time_step(1e-3), 1e-3);
   EXPECT_LT(lockstep.time_step(1e-3), 0.5e-3);
   EXPECT_EQ(lockstep.time_step(1e-3), system.solid_step(1e-3));
+}
+
+// The monolithic scheme: a fluid whose surface at z = 0.5 bodies cannot sink through
+// contributes a unilateral row for each body whose bottom reaches it; the bodies' solver meets
+// it at every sub-step together with gravity.
+class HardSurface final : public FluidExchange {
+ public:
+  CouplingScheme scheme() const override { return CouplingScheme::kMonolithic; }
+  void body_constraints(const std::vector<BodyKinematics>& motion,
+                        std::vector<ConstraintRow>& rows) const override {
+    for (std::size_t b = 0; b < motion.size(); ++b) {
+      if (motion[b].position[2] - 0.05 > 0.5) continue;  // its bottom is above the surface
+      ConstraintRow r;
+      r.a = b;
+      r.linear_a = Vec3::UnitZ();
+      r.lower = 0;
+      rows.push_back(r);
+    }
+  }
+  void receive_body_motion(const std::vector<BodyKinematics>&) override {}
+  std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
+    return std::vector<Wrench>(motion.size());
+  }
+};
+
+TEST(Coupler, MonolithicRowsHoldABodyOnTheSurface) {
+  MultibodySystem system = one_free_block(2.0);  // at z = 1, g = 10
+  HardSurface fluid;
+  Coupler coupler(system, 1, &fluid, true);
+  const double dt = 1e-3;
+  double lowest = 1;
+  for (int step = 0; step < 1000; ++step) {
+    coupler.advance_bodies(dt);
+    lowest = std::min(lowest, coupler.motion()[0].position[2]);
+  }
+  // It fell 0.45 m in 0.3 s and then rests. The rows come from the motion at a step's start,
+  // so it sinks in by up to one step's fall (3 mm), and no further.
+  const double v_impact = std::sqrt(2 * 10 * 0.45);
+  EXPECT_GT(lowest, 0.55 - 1.01 * v_impact * dt);
+  EXPECT_NEAR(coupler.motion()[0].position[2], lowest, 1e-12);
+  // Its velocity at the step's end is the second half kick's, - g dt / 2.
+  EXPECT_NEAR(coupler.motion()[0].velocity[2], -0.5 * 10 * dt, 1e-12);
+  ASSERT_EQ(coupler.constraints().size(), 1u);
+  // Resting: the row's impulse per step carries the weight.
+  EXPECT_NEAR(coupler.constraints()[0].impulse / dt, 2.0 * 10, 1e-9);
 }
 
 }  // namespace
