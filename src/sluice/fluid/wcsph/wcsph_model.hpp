@@ -11,9 +11,9 @@
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
-#include "sluice/fluid/wcsph/adami_walls.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
+#include "sluice/fluid/wcsph/wcsph_boundaries.hpp"
 #include "sluice/fluid/wcsph/wcsph_pair_term.hpp"
 #include "sluice/fluid/wcsph/wcsph_parameters.hpp"
 
@@ -28,7 +28,8 @@ class WcsphModel final : public ParticleFluid<D> {
                          bodies),
         p_(parameters),
         kernel_(parameters.smoothing_length(config.spacing)),
-        eos_(config.fluid.density, parameters.sound_speed, parameters.gamma) {}
+        eos_(config.fluid.density, parameters.sound_speed, parameters.gamma),
+        boundary_(wcsph_boundaries<D, Kernel>().make(parameters.boundary)) {}
 
   std::string describe() const override {
     return fmt::format(
@@ -158,10 +159,12 @@ class WcsphModel final : public ParticleFluid<D> {
     }
   }
 
-  // The walls' pressure, density and viscous velocity from the fluid around them.
+  // The walls' pressure, density and viscous velocity from the fluid around them, as the
+  // boundary treatment sets them.
   void update_walls(ParticleState<D>& s) {
     pack(s, false);
-    update_adami_walls(s, packed_, kernel_, eos_, s.particles[wall_velocity_]);
+    WcsphBoundaryContext<D, Kernel> context{s, packed_, kernel_, eos_, s.particles[wall_velocity_]};
+    boundary_->update(context);
   }
 
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
@@ -251,6 +254,7 @@ class WcsphModel final : public ParticleFluid<D> {
   TaitEquation eos_;
   FieldHandle<Vec<D>> acceleration_, half_velocity_, wall_velocity_;
   FieldHandle<Real> density_rate_, half_density_;
+  std::unique_ptr<BoundaryTreatment<WcsphBoundaryContext<D, Kernel>>> boundary_;
   PackedParticles packed_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "sluice/fluid/wcsph/wcsph_boundaries.hpp"
 #include "sluice/kernels/cubic_spline.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
 
@@ -46,6 +48,15 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
     model.fail("wall_slip", fmt::format("expected no_slip or free_slip, got '{}'", slip));
   }
   p.no_slip = slip == "no_slip";
+  p.boundary = model.optional<std::string>("boundary", p.boundary);
+  const std::vector<std::string> boundaries = wcsph_boundaries<3, WendlandC2<3>>().names();
+  if (std::find(boundaries.begin(), boundaries.end(), p.boundary) == boundaries.end()) {
+    std::string problem = fmt::format("unknown boundary treatment '{}'; available: {}", p.boundary,
+                                      fmt::join(boundaries, ", "));
+    const std::string guess = io::closest_match(p.boundary, boundaries);
+    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+    model.fail("boundary", problem);
+  }
   model.finish();
 
   if (p.sound_speed == 0) {

@@ -22,6 +22,7 @@ struct WcsphParameters {
   double cfl = 0.2;                    // acoustic Courant number
   double force_cfl = 0.25;             // coefficient of sqrt(h / |a|max)
   bool no_slip = true;                 // walls: no-slip (true) or free-slip
+  std::string boundary = "adami";      // the boundary treatment, by name (wcsph_boundaries)
 
   double smoothing_length(double dx) const { return h_over_dx * dx; }
 };
