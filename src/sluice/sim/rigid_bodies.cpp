@@ -217,22 +217,24 @@ std::vector<BodyPoint> RigidBodies::surface_points() const {
   return out;
 }
 
-std::vector<Vec3> RigidBodies::surface_normals() const {
-  std::vector<Vec3> out;
+// One array of every body's contact shape, bodies in order (the walls' shapes follow them in
+// the system and are left out).
+template <class T>
+std::vector<T> RigidBodies::gather(std::vector<T> ContactShape::*member) const {
+  std::vector<T> out;
   for (std::size_t b = 0; b < count(); ++b) {
-    const auto& normals = system_.shape(b).surface_normal;
-    out.insert(out.end(), normals.begin(), normals.end());
+    const std::vector<T>& values = system_.shape(b).*member;
+    out.insert(out.end(), values.begin(), values.end());
   }
   return out;
 }
 
+std::vector<Vec3> RigidBodies::surface_normals() const {
+  return gather(&ContactShape::surface_normal);
+}
+
 std::vector<double> RigidBodies::surface_areas() const {
-  std::vector<double> out;
-  for (std::size_t b = 0; b < count(); ++b) {
-    const auto& areas = system_.shape(b).surface_area;
-    out.insert(out.end(), areas.begin(), areas.end());
-  }
-  return out;
+  return gather(&ContactShape::surface_area);
 }
 
 bool RigidBodies::occupies(const Vec3& x, double clearance) const {

@@ -45,6 +45,8 @@ class RigidBodies final : public BodyGeometry {
 
  private:
   bool body_occupies(std::size_t b, const Vec3& x, double clearance) const;
+  template <class T>
+  std::vector<T> gather(std::vector<T> ContactShape::*member) const;
   // How deep the surface particles of body a lie inside body b (bodies or walls).
   double penetration(std::size_t a, std::size_t b) const;
 
