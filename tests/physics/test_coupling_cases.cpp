@@ -48,13 +48,15 @@ namespace {
 // solid sub-cycling and with the fluid stepping at the solid step whenever a contact is in
 // reach. Until the first contact comes in reach (0.30 s) both runs take the same steps, bit for
 // bit; from there they step differently. Their paths agree within 1 % of the drop (0.2 m)
-// through the fall and both landings (0.33 s and 0.39 s), to 0.5 s. Later the blocks rest and
+// through the fall and both landings (0.33 s and 0.39 s), to 0.4 s. Later the blocks rest and
 // only drift sideways with the water they stirred, whose eddies amplify any difference (a step,
-// a rounding) without bound: that part of the path is printed, not bounded. Sub-cycling saves
+// a rounding) without bound: that part of the path is printed, not bounded. (Measured in 50 ms
+// windows on two builds that round differently: within 0.02 mm to 0.35 s and 0.04-0.10 mm to
+// 0.40 s; then 0.1-0.7 mm to 0.45 s and 0.5-1.1 mm to 0.5 s.) Sub-cycling saves
 // fluid steps, the steps that cost: about half of them here (the wall time is in
 // bench/run_subcycling.sh).
 TEST(SubCyclingInWater, SamePathsForFewerFluidSteps) {
-  constexpr double kLandedAndSettled = 0.5;
+  constexpr double kBothLanded = 0.4;
   auto run = [](bool subcycling) {
     Simulation<2> sim(testing::load_case("subcycling_2d.yaml", {std::string("contact.subcycling=") +
                                                                 (subcycling ? "true" : "false")}));
@@ -72,14 +74,14 @@ TEST(SubCyclingInWater, SamePathsForFewerFluidSteps) {
   double worst = 0, worst_resting = 0;
   for (std::size_t k = 0; k < cycled.size(); ++k) {
     const double apart = (cycled[k].second - reference[k].second).norm();
-    double& largest = cycled[k].first <= kLandedAndSettled ? worst : worst_resting;
+    double& largest = cycled[k].first <= kBothLanded ? worst : worst_resting;
     largest = std::max(largest, apart);
   }
   const double drop = 0.2;
   std::printf(
       "C6 (case, in water): paths differ by %.3g mm (%.3g %% of the drop) to %.1f s, by %.3g mm "
       "while resting after; %ld against %ld fluid steps (%.2fx)\n",
-      1e3 * worst, 100 * worst / drop, kLandedAndSettled, 1e3 * worst_resting, cycled_steps,
+      1e3 * worst, 100 * worst / drop, kBothLanded, 1e3 * worst_resting, cycled_steps,
       reference_steps, double(reference_steps) / cycled_steps);
   EXPECT_LT(worst, 0.01 * drop);
   EXPECT_GT(double(reference_steps) / cycled_steps, 1.5);

@@ -168,7 +168,7 @@ class WcsphModel final : public ParticleFluid<D> {
   }
 
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
-  // neighbours i, from the very pair term that gives the fluid's acceleration.
+  // neighbours i, from the very pair term that gives the fluid's acceleration (in double).
   void body_point_forces(std::vector<Vec3>& force) const override {
     const ParticleState<D>& s = this->state();
     const auto& ps = s.particles;
@@ -181,8 +181,8 @@ class WcsphModel final : public ParticleFluid<D> {
       s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
         for (std::size_t i = begin; i < end; ++i) {
           if (p.fluid[i] == 0) continue;
-          const auto own = own_particle(p, i, static_cast<float>(two_nu_rho0 / ps.density[i]));
-          float ax = 0, ay = 0, az = 0, drho = 0;
+          const auto own = own_particle(p, i, two_nu_rho0 / ps.density[i]);
+          double ax = 0, ay = 0, az = 0, drho = 0;
           add_wcsph_pair_term(p, own, w, k, kernel_, ax, ay, az, drho);
           f -= ps.mass[i] * Vec3(ax, ay, az);  // minus m_i a_i(w)
         }
@@ -238,7 +238,7 @@ class WcsphModel final : public ParticleFluid<D> {
   void add_rates(std::size_t i, std::uint32_t begin, std::uint32_t end, const WcsphPairConstants& k,
                  float laminar_i, Rates& out) const {
     const auto p = packed_.view();
-    const WcsphOwnParticle own = own_particle(p, i, laminar_i);
+    const WcsphOwnParticle<float> own = own_particle(p, i, laminar_i);
     float ax = 0, ay = 0, az = 0, drho = 0;
 #pragma omp simd reduction(+ : ax, ay, az, drho)
     for (std::size_t j = begin; j < end; ++j)
