@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Sets up (Debian packages), builds, and runs every test: the release build's unit, physics,
-# command-line and output tests; the physics checks again in a portable build for x86-64-v2 (4-wide
-# SSE, no FMA: other rounding than the release build's AVX2, so a check whose margin is too
-# thin for another processor fails here); the unit and command-line tests under
+# command-line and output tests; the physics checks again in a portable build for x86-64-v2
+# (4-wide SSE, no FMA: other rounding than the release build's AVX2, so a check whose margin
+# is too thin for another processor fails here); the unit and command-line tests under
 # AddressSanitizer + UndefinedBehaviorSanitizer; and a formatting check.
 set -euo pipefail
 cd "$(dirname "$0")/.."
