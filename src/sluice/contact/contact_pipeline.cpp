@@ -12,6 +12,16 @@ double height_above(const AxisBox& box, const HalfSpace& plane) {
   return (centre - plane.point).dot(plane.normal) - half.dot(plane.normal.cwiseAbs());
 }
 
+// Whether bodies a and b come within `margin` of each other: their boxes, and a plane wall's
+// plane rather than its box (which spans the domain).
+bool within(const std::vector<ContactShape>& shapes, std::size_t a, std::size_t b,
+            const AxisBox& box_a, const AxisBox& box_b, double margin) {
+  if (!box_a.overlaps(box_b, margin)) return false;
+  if (shapes[a].half_space) return height_above(box_b, *shapes[a].half_space) <= margin;
+  if (shapes[b].half_space) return height_above(box_a, *shapes[b].half_space) <= margin;
+  return true;
+}
+
 }  // namespace
 
 ContactPipeline::ContactPipeline(double contact_distance, std::unique_ptr<ContactSolver> solver)
@@ -39,12 +49,8 @@ void ContactPipeline::candidates(const std::vector<SystemBody>& bodies,
     large_[b] = shapes_[b].half_space.has_value();
   }
   broad_phase_.find(boxes_, fixed_, large_, margin, pairs_);
-  // A plane wall's box spans the domain: keep only the bodies near its plane.
   std::erase_if(pairs_, [&](const BodyPair& p) {
-    const auto& [a, b] = p;
-    if (shapes_[a].half_space) return height_above(boxes_[b], *shapes_[a].half_space) > margin;
-    if (shapes_[b].half_space) return height_above(boxes_[a], *shapes_[b].half_space) > margin;
-    return false;
+    return !within(shapes_, p.first, p.second, boxes_[p.first], boxes_[p.second], margin);
   });
 }
 
@@ -76,11 +82,7 @@ double ContactPipeline::stable_step(const std::vector<SystemBody>& bodies, doubl
         (bodies[b].state.velocity - bodies[a].state.velocity).norm() + speed[a] + speed[b];
     // In reach within this step: closer than the way the two can travel towards each other.
     const double reach = approach * dt + distance_;
-    const AxisBox& box_a = surfaces_[a].bounds();
-    const AxisBox& box_b = surfaces_[b].bounds();
-    if (!box_a.overlaps(box_b, reach)) continue;
-    if (shapes_[a].half_space && height_above(box_b, *shapes_[a].half_space) > reach) continue;
-    if (shapes_[b].half_space && height_above(box_a, *shapes_[b].half_space) > reach) continue;
+    if (!within(shapes_, a, b, surfaces_[a].bounds(), surfaces_[b].bounds(), reach)) continue;
     step = std::min(step, solver_->pair_step(a, b, approach, bodies, shapes_));
   }
   return step;

@@ -48,7 +48,6 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
   const Real dx = config.spacing;
   s.spacing = dx;
   s.gravity = from_3d<D>(config.gravity);
-  s.rest_density = config.fluid.density;
   s.kinematic_viscosity = config.fluid.kinematic_viscosity;
   s.domain = config.domain;
   s.escape_box = config.domain;

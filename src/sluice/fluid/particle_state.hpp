@@ -18,7 +18,6 @@ struct ParticleState {
   CellList<D> cells;
   Vec<D> gravity = Vec<D>::Zero();
   Real spacing = 0;
-  Real rest_density = 1000;
   Real kinematic_viscosity = 0;
   AxisBox domain;
   // The domain grown by the wall thickness: a fluid particle outside it has escaped.
