@@ -55,8 +55,9 @@ TEST(CaseHertzImpact, ContactTimeAndPeakOverlap) {
 // B1: the floating box settles at a draft of 0.70 m within 3 %, without drifting sideways.
 // The draft follows from the water's area (conserved) and the box's height: with water level h,
 // 3 h = A + 1 d and d = h - (z - 0.5). The mean is taken over the last two heave periods.
-TEST(CaseFloatingBox, DraftByArchimedes) {
-  Simulation<2> sim(testing::load_case("floating_box_2d.yaml"));
+// B1 with a model: the mean draft over the last 4 s of the 6 s run.
+void floating_box_draft(const std::string& model) {
+  Simulation<2> sim(testing::load_case("floating_box_2d.yaml", {"model.name=" + model}));
   const double dx = sim.config().spacing;
   const double area = static_cast<double>(sim.state().fluid_count) * dx * dx;
   const double x0 = sim.bodies().state(0).position[0];
@@ -72,13 +73,20 @@ TEST(CaseFloatingBox, DraftByArchimedes) {
     }
   });
   const double draft = sum / samples;
-  std::printf("B1 (case): mean draft %.4f m (Archimedes 0.70, %.2f %%), sideways drift %.3g mm\n",
-              draft, 100 * (draft - 0.7) / 0.7, 1e3 * drift);
+  std::printf(
+      "B1 (case, %s): mean draft %.4f m (Archimedes 0.70, %.2f %%), sideways drift %.3g mm\n",
+      model.c_str(), draft, 100 * (draft - 0.7) / 0.7, 1e3 * drift);
   EXPECT_NEAR(draft, 0.7, 0.03 * 0.7);
   EXPECT_LT(drift, 0.01);
 }
 
-// B2: the heavy cube sinks and rests on the floor, never passing through it.
+TEST(CaseFloatingBox, DraftByArchimedes) {
+  floating_box_draft("wcsph");
+}
+TEST(CaseFloatingBox, DraftByArchimedesWithMps) {
+  floating_box_draft("mps");
+}
+
 TEST(CaseFallingCube, SinksAndRestsOnTheFloor) {
   Simulation<3> sim(testing::load_case("falling_cube.yaml", {"end_time=0.4"}));
   const double half = 0.01, dx = sim.config().spacing;

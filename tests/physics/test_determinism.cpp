@@ -31,6 +31,26 @@ TEST(Determinism, DamBreakSameOnOneAndTwoThreads) {
   }
 }
 
+// The MPS model: neighbour list, assembly and the conjugate gradient's products run on all
+// threads, each row summed by one thread.
+TEST(Determinism, MpsDamBreakSameOnOneAndTwoThreads) {
+  const int before = omp_get_max_threads();
+  ParticleSet<2> runs[2];
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    Simulation<2> sim(testing::load_case("dam_break_2d_mps.yaml", {"spacing=0.05"}));
+    testing::run_until(sim, 0.1, [](const StepClock&) {});
+    runs[threads - 1] = sim.state().particles;
+  }
+  omp_set_num_threads(before);
+  ASSERT_EQ(runs[0].size(), runs[1].size());
+  for (std::size_t i = 0; i < runs[0].size(); ++i) {
+    ASSERT_EQ(runs[0].position[i], runs[1].position[i]) << "particle " << i;
+    ASSERT_EQ(runs[0].velocity[i], runs[1].velocity[i]) << "particle " << i;
+    ASSERT_EQ(runs[0].pressure[i], runs[1].pressure[i]) << "particle " << i;
+  }
+}
+
 // The bodies and particles of two runs, bit for bit; the first run must have taken more than
 // `least_substeps` solid sub-steps (the contacts were in play).
 template <int D>

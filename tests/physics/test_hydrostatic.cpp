@@ -60,5 +60,52 @@ TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
   EXPECT_LT(worst_speed, 0.01 * std::sqrt(g * depth)) << "largest speed over the whole run";
 }
 
+// F1 with the MPS model. Its pressure is noisy from step to step (the pressure equation answers
+// every small change of the particles' arrangement), so the bottom pressure is the mean over
+// the last 0.1 s, and the noise is reported.
+TEST(HydrostaticTank2D, MpsBottomPressureAveragedOverATenthOfASecond) {
+  const io::CaseConfig config = testing::load_case("hydrostatic_2d_mps.yaml");
+  Simulation<2> sim(config);
+  const double g = 9.81, rho0 = config.fluid.density, depth = 1.0;
+  const std::size_t particles = sim.state().particles.size();
+  const std::size_t fluid = sim.state().fluid_count;
+  io::ProbeConfig bottom;
+  bottom.kind = io::ProbeKind::kPressure;
+  bottom.point = Vec3(0.5, 0, 0);
+  Probes probe({bottom}, "");
+  double sum = 0, sum2 = 0;
+  long samples = 0;
+  testing::run_until(sim, 2.0, [&](const StepClock& c) {
+    if (c.time <= 1.9) return;
+    const double p = probe.measure(sim.fluid())[0];
+    sum += p;
+    sum2 += p * p;
+    ++samples;
+  });
+  ASSERT_GT(samples, 10);
+  const double mean = sum / samples;
+  const double noise = std::sqrt(std::max(0.0, sum2 / samples - mean * mean));
+  const auto& s = sim.state();
+  std::size_t outside = 0, fluid_now = 0;
+  double fastest = 0;
+  for (std::size_t i = 0; i < s.particles.size(); ++i) {
+    if (!s.particles.is_fluid(i)) continue;
+    ++fluid_now;
+    const auto& x = s.particles.position[i];
+    if (x[0] < 0 || x[0] > 1 || x[1] < 0) ++outside;
+    fastest = std::max(fastest, s.particles.velocity[i].norm());
+  }
+  const double expected = rho0 * g * depth;
+  std::printf(
+      "F1 (mps): bottom pressure over 1.9-2.0 s %.5g Pa (rho g H %.5g, %+.2f %%), noise (std) "
+      "%.3g Pa (%.2f %%) over %ld steps, largest speed at 2 s %.4f m/s\n",
+      mean, expected, 100 * (mean / expected - 1), noise, 100 * noise / expected, samples, fastest);
+  EXPECT_NEAR(mean, expected, 0.03 * expected);
+  EXPECT_EQ(outside, 0u);
+  EXPECT_EQ(s.particles.size(), particles);
+  EXPECT_EQ(fluid_now, fluid);
+  EXPECT_LT(fastest, 0.05 * std::sqrt(g * depth));
+}
+
 }  // namespace
 }  // namespace sluice

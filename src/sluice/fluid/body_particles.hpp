@@ -22,7 +22,7 @@ class BodyParticles final : public ParticleFluid<D> {
 
  protected:
   void model_stages(StageList&, StageList&) override {}
-  void body_point_forces(std::vector<Vec3>&) const override {}
+  void body_point_forces(const std::vector<BodyKinematics>&, std::vector<Vec3>&) const override {}
 };
 
 }  // namespace sluice

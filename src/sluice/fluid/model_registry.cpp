@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "sluice/fluid/body_particles.hpp"
+#include "sluice/fluid/mps/mps_factory.hpp"
 #include "sluice/fluid/wcsph/wcsph_factory.hpp"
 
 namespace sluice {
@@ -30,6 +31,7 @@ template <int D>
 ModelRegistry shipped_models() {
   ModelRegistry registry;
   registry.add("wcsph", make_wcsph<D>);
+  registry.add("mps", make_mps<D>);
   return registry;
 }
 

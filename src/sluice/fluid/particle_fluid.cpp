@@ -144,7 +144,7 @@ void ParticleFluid<D>::receive_body_motion(const std::vector<BodyKinematics>& mo
 template <int D>
 std::vector<Wrench> ParticleFluid<D>::body_loads(const std::vector<BodyKinematics>& motion) const {
   std::vector<Vec3> force(body_points_.size(), Vec3::Zero());
-  body_point_forces(force);
+  body_point_forces(motion, force);
   return body_points_.loads(force, motion, body_count_);
 }
 

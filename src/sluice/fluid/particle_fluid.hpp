@@ -60,8 +60,10 @@ class ParticleFluid : public FluidSystem {
   // The model's stages around the neighbour sort.
   virtual void model_stages(StageList& before_neighbours, StageList& after_neighbours) = 0;
   // The fluid's force on every body particle (kind kBody), indexed by its body point, from the
-  // last force evaluation. `force` has one entry per body point, zero on entry.
-  virtual void body_point_forces(std::vector<Vec3>& force) const = 0;
+  // last force evaluation, for the bodies' present `motion`. `force` has one entry per body
+  // point, zero on entry.
+  virtual void body_point_forces(const std::vector<BodyKinematics>& motion,
+                                 std::vector<Vec3>& force) const = 0;
 
  private:
   io::PolyFrame frame_of(const ParticleSet<D>& particles) const;

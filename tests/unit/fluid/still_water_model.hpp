@@ -37,7 +37,8 @@ class StillWater final : public ParticleFluid<D> {
     after_neighbours.push_back(
         make_stage<const StepClock>("depth", [this](const StepClock&) { measure_depth(); }));
   }
-  void body_point_forces(std::vector<Vec3>&) const override {}  // no force on any body
+  void body_point_forces(const std::vector<BodyKinematics>&, std::vector<Vec3>&) const override {
+  }  // no force on any body
 
  private:
   // p = rho g depth, so depth = p / (rho g).

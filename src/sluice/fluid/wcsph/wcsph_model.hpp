@@ -169,7 +169,8 @@ class WcsphModel final : public ParticleFluid<D> {
 
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
   // neighbours i, from the very pair term that gives the fluid's acceleration (in double).
-  void body_point_forces(std::vector<Vec3>& force) const override {
+  void body_point_forces(const std::vector<BodyKinematics>&,
+                         std::vector<Vec3>& force) const override {
     const ParticleState<D>& s = this->state();
     const auto& ps = s.particles;
     const auto p = packed_.view();

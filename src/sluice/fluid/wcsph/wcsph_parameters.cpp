@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sluice/fluid/free_fall_speed.hpp"
 #include "sluice/fluid/wcsph/wcsph_boundaries.hpp"
 #include "sluice/kernels/cubic_spline.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
@@ -61,11 +62,7 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
 
   if (p.sound_speed == 0) {
     if (p.max_speed == 0) {
-      // Largest speed of a free fall from the top of the highest fluid block to the floor.
-      double top = config.domain.min[2];
-      for (const auto& block : config.fluid.blocks) top = std::max(top, block.box.max[2]);
-      const double height = top - config.domain.min[2];
-      p.max_speed = std::sqrt(2 * config.gravity.norm() * height);
+      p.max_speed = free_fall_speed(config);
       if (!(p.max_speed > 0)) {
         model.fail_here(
             "cannot derive the speed of sound without gravity: set model.max_speed or "

@@ -1,0 +1,85 @@
+#include "sluice/fluid/mps/mps_parameters.hpp"
+
+#include <fmt/format.h>
+
+#include "sluice/fluid/free_fall_speed.hpp"
+
+namespace sluice {
+
+namespace {
+
+// A string option that must be one of `choices`; the message lists them and guesses a typo.
+std::string one_of(io::MapReader& model, const std::string& key, const std::string& fallback,
+                   const std::vector<std::string>& choices) {
+  const std::string value = model.optional<std::string>(key, fallback);
+  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
+  std::string problem =
+      fmt::format("unknown value '{}'; expected one of: {}", value, fmt::join(choices, ", "));
+  const std::string guess = io::closest_match(value, choices);
+  if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+  model.fail(key, problem);
+}
+
+// A number inside (low, high) or [low, high].
+double within(io::MapReader& model, const std::string& key, double fallback, double low,
+              double high, bool closed) {
+  const double value = model.optional<double>(key, fallback);
+  const bool inside = closed ? (value >= low && value <= high) : (value > low && value < high);
+  if (!inside) {
+    model.fail(key, fmt::format("must lie in {}{}, {}{}, got {}", closed ? "[" : "(", low, high,
+                                closed ? "]" : ")", value));
+  }
+  return value;
+}
+
+}  // namespace
+
+MpsParameters read_mps_parameters(const io::CaseConfig& config) {
+  io::MapReader model(config.source, config.model, "model", config.model_line);
+  model.required<std::string>("name");
+  MpsParameters p;
+  p.variant =
+      one_of(model, "variant", "incompressible", {"incompressible", "explicit"}) == "explicit"
+          ? MpsVariant::kExplicit
+          : MpsVariant::kIncompressible;
+  p.re_over_dx = model.optional_positive("re_over_dx", p.re_over_dx);
+  if (p.re_over_dx < 1.5 || p.re_over_dx > 4.5) {
+    model.fail("re_over_dx", fmt::format("must lie in [1.5, 4.5], got {}", p.re_over_dx));
+  }
+  p.surface_threshold = within(model, "surface_threshold", p.surface_threshold, 0, 1, false);
+  p.surface_count_ratio = within(model, "surface_count_ratio", p.surface_count_ratio, 0, 1, false);
+  p.source_relaxation = within(model, "source_relaxation", p.source_relaxation, 0, 1, true);
+  p.compressibility = model.optional_non_negative("compressibility", p.compressibility);
+  p.keep_negative_pressure =
+      one_of(model, "negative_pressure", "clamp", {"clamp", "keep"}) == "keep";
+  p.collision_distance = within(model, "collision_distance", p.collision_distance, 0, 1, true);
+  p.collision_restitution =
+      within(model, "collision_restitution", p.collision_restitution, 0, 1, true);
+  p.gradient_correction = model.optional<bool>("gradient_correction", p.gradient_correction);
+  p.artificial_viscosity =
+      model.optional_non_negative("artificial_viscosity", p.artificial_viscosity);
+  p.cfl = model.optional_positive("cfl", p.cfl);
+  if (p.cfl > 1) model.fail("cfl", fmt::format("must not exceed 1, got {}", p.cfl));
+  p.sound_speed = model.optional_positive("sound_speed", 0);
+  p.speed_factor = model.optional_positive("speed_factor", p.speed_factor);
+  p.max_speed = model.optional_positive("max_speed", 0);
+  p.solver = one_of(model, "solver", p.solver, sparse_solver_names());
+  p.solver_settings.tolerance =
+      model.optional_positive("solver_tolerance", p.solver_settings.tolerance);
+  if (p.solver_settings.tolerance >= 1) {
+    model.fail("solver_tolerance",
+               fmt::format("must be below 1, got {}", p.solver_settings.tolerance));
+  }
+  p.solver_settings.max_iterations = static_cast<int>(
+      model.optional_positive("solver_max_iterations", p.solver_settings.max_iterations));
+  model.finish();
+
+  if (p.max_speed == 0) p.max_speed = free_fall_speed(config);
+  if (!(p.max_speed > 0)) {
+    model.fail_here("cannot derive a speed scale without gravity: set model.max_speed");
+  }
+  if (p.sound_speed == 0) p.sound_speed = p.speed_factor * p.max_speed;
+  return p;
+}
+
+}  // namespace sluice

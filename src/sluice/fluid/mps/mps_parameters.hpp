@@ -1,0 +1,39 @@
+// Parameters of the MPS model, read from the case's `model:` mapping. Defaults, meanings and
+// sources are documented in docs/case-format.md.
+#pragma once
+
+#include <string>
+
+#include "sluice/io/case_config.hpp"
+#include "sluice/linear/sparse_solver.hpp"
+
+namespace sluice {
+
+enum class MpsVariant {
+  kIncompressible,  // pressure from the pressure Poisson equation
+  kExplicit,        // pressure from the number density through an equation of state
+};
+
+struct MpsParameters {
+  MpsVariant variant = MpsVariant::kIncompressible;
+  double re_over_dx = 2.1;            // C_e: effective radius r_e = C_e l0
+  double surface_threshold = 0.97;    // beta: surface when n* < beta n0 ...
+  double surface_count_ratio = 0.85;  // ... and fewer than this share of n0's neighbours
+  double source_relaxation = 0.01;    // gamma: weight of the density-deviation source
+  double compressibility = 4.5e-10;   // alpha in 1/Pa (water's own)
+  bool keep_negative_pressure = false;
+  bool gradient_correction = true;     // the corrective matrix in the pressure gradient
+  double artificial_viscosity = 0.05;  // explicit variant: nu_a = alpha c0 l0
+  double collision_distance = 0.85;    // in l0; 0 turns the collision model off
+  double collision_restitution = 0.2;
+  double cfl = 0.2;        // Courant number on the particle spacing
+  double sound_speed = 0;  // explicit variant's c0; 0 = speed_factor * max_speed
+  double speed_factor = 10;
+  double max_speed = 0;  // expected largest speed; 0 = sqrt(2 g H)
+  std::string solver = "cg_diagonal";
+  SolverSettings solver_settings;
+};
+
+MpsParameters read_mps_parameters(const io::CaseConfig& config);
+
+}  // namespace sluice

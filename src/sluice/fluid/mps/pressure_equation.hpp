@@ -1,0 +1,143 @@
+// The pressure Poisson equation of incompressible MPS, on the particles that are neither on the
+// free surface (p = 0 there) nor out of the fluid's reach:
+//   <lap p>_i - alpha rho / dt^2 p_i = -gamma rho / dt^2 (n*_i - n0) / n0
+//                                      + (1 - gamma) rho / dt <div u*>_i
+// (source relaxation gamma after Tanaka & Masunaga 2010; artificial compressibility alpha,
+// Ikeda et al. 2001). Written as A p = b with A = -lap + alpha rho / dt^2, which is symmetric
+// positive definite. Each row is assembled by one thread straight into the compressed sparse
+// rows; the solve starts from the last pressure.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "sluice/exec/policy.hpp"
+#include "sluice/fluid/mps/mps_operators.hpp"
+#include "sluice/linear/sparse_solver.hpp"
+
+namespace sluice {
+
+template <int D>
+struct PressureEquationInputs {
+  MpsOperators<D> op;
+  const std::vector<Vec<D>>& velocity;       // u* (walls and bodies: their own)
+  const std::vector<Real>& number_density;   // n*
+  const std::vector<std::int32_t>& surface;  // 1 on the free surface
+  const std::vector<std::uint8_t>& active;   // 1: fluid, or a boundary particle it reaches
+  Real dt = 0;
+  Real density = 0;
+  Real relaxation = 0;       // gamma
+  Real compressibility = 0;  // alpha, 1/Pa
+};
+
+struct PressureEquationReport {
+  std::size_t unknowns = 0;
+  std::size_t entries = 0;
+  int iterations = 0;
+  double relative_residual = 0;
+  bool converged = true;
+};
+
+template <int D>
+class PressureEquation {
+ public:
+  PressureEquation(const std::string& solver, const SolverSettings& settings)
+      : solver_(make_sparse_solver(solver, settings)) {
+    if (!solver_) throw std::invalid_argument("unknown sparse solver " + solver);
+  }
+
+  void assemble(const PressureEquationInputs<D>& in) {
+    const std::size_t n = in.active.size();
+    // Unknowns numbered in particle order, so each row's columns come out sorted.
+    row_of_.assign(n, -1);
+    int unknowns = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (in.active[i] && !in.surface[i]) row_of_[i] = unknowns++;
+    }
+    particle_of_.resize(static_cast<std::size_t>(unknowns));
+    for (std::size_t i = 0; i < n; ++i) {
+      if (row_of_[i] >= 0) particle_of_[static_cast<std::size_t>(row_of_[i])] = i;
+    }
+    const MpsOperators<D>& op = in.op;
+    const auto unknown = [&](std::size_t j) { return row_of_[j] >= 0; };
+    // Pass 1: entries per row (the diagonal and the unknown neighbours in reach).
+    matrix_.resize(unknowns, unknowns);
+    int* start = matrix_.outerIndexPtr();
+    start[0] = 0;
+    exec::Default::for_each_balanced(particle_of_.size(), [&](std::size_t r) {
+      const std::size_t i = particle_of_[r];
+      int count = 0;
+      op.number_density(i, unknown, count);
+      start[r + 1] = count + 1;
+    });
+    for (int r = 0; r < unknowns; ++r) start[r + 1] += start[r];
+    matrix_.resizeNonZeros(start[unknowns]);
+    rhs_.resize(unknowns);
+    // Pass 2: the values, and the right-hand side.
+    const Real inverse_dt = 1 / in.dt;
+    const Real density_source = in.relaxation * in.density * inverse_dt * inverse_dt;
+    const Real divergence_source = (1 - in.relaxation) * in.density * inverse_dt;
+    const Real compressibility = in.compressibility * in.density * inverse_dt * inverse_dt;
+    const Real n0 = op.lattice().n0;
+    int* column = matrix_.innerIndexPtr();
+    double* value = matrix_.valuePtr();
+    const auto all = [](std::size_t) { return true; };
+    exec::Default::for_each_balanced(particle_of_.size(), [&](std::size_t r) {
+      const std::size_t i = particle_of_[r];
+      int k = start[r];
+      int diagonal = -1;
+      Real sum = 0;
+      op.neighbours().for_each(i, [&](std::size_t j) {
+        if (!in.active[j]) return;
+        const Real c = op.laplacian_coefficient(i, j);
+        if (c <= 0) return;
+        sum += c;
+        if (row_of_[j] < 0) return;  // p_j = 0 on the surface: only the diagonal sees it
+        if (diagonal < 0 && j > i) diagonal = k++;
+        column[k] = row_of_[j];
+        value[k++] = -c;
+      });
+      if (diagonal < 0) diagonal = k++;
+      column[diagonal] = static_cast<int>(r);
+      value[diagonal] = sum + compressibility;
+      rhs_[static_cast<Eigen::Index>(r)] = density_source * (in.number_density[i] - n0) / n0 -
+                                           divergence_source * op.divergence(i, in.velocity, all);
+    });
+    report_ = PressureEquationReport{};
+    report_.unknowns = particle_of_.size();
+    report_.entries = static_cast<std::size_t>(start[unknowns]);
+  }
+
+  // Solves from the present `pressure` as the first guess and writes the result back, zero
+  // off the unknowns. False when the solver did not reach its tolerance.
+  bool solve(std::vector<Real>& pressure) {
+    guess_.resize(static_cast<Eigen::Index>(particle_of_.size()));
+    for (std::size_t r = 0; r < particle_of_.size(); ++r)
+      guess_[static_cast<Eigen::Index>(r)] = pressure[particle_of_[r]];
+    SolveReport solved;
+    solved.converged = true;
+    if (!particle_of_.empty()) solved = solver_->solve(matrix_, rhs_, guess_);
+    report_.iterations = solved.iterations;
+    report_.relative_residual = solved.relative_residual;
+    report_.converged = solved.converged;
+    exec::Default::for_each(pressure.size(), [&](std::size_t i) {
+      pressure[i] = row_of_[i] >= 0 ? guess_[row_of_[i]] : 0;
+    });
+    return solved.converged;
+  }
+
+  const PressureEquationReport& report() const { return report_; }
+  const SparseRows& matrix() const { return matrix_; }
+  const Eigen::VectorXd& rhs() const { return rhs_; }
+
+ private:
+  std::unique_ptr<SparseSolver> solver_;
+  SparseRows matrix_;
+  Eigen::VectorXd rhs_, guess_;
+  std::vector<int> row_of_;
+  std::vector<std::size_t> particle_of_;
+  PressureEquationReport report_;
+};
+
+}  // namespace sluice

@@ -1,0 +1,46 @@
+// Iterative solvers for the sparse symmetric positive definite systems of the implicit models
+// (the MPS pressure equation), behind one interface so that a model names its solver in the
+// case file: Eigen's conjugate gradient with a diagonal or incomplete-Cholesky preconditioner,
+// and hypre's BoomerAMG as the preconditioner of hypre's conjugate gradient when sluice is
+// built with hypre (docs/performance.md compares them).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sluice {
+
+// Rows stored contiguously: each row is assembled by one thread, and Eigen multiplies a
+// row-major matrix by a vector on all threads.
+using SparseRows = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
+struct SolverSettings {
+  double tolerance = 1e-8;  // on the residual relative to the right-hand side, |r| / |b|
+  int max_iterations = 1000;
+};
+
+struct SolveReport {
+  int iterations = 0;
+  double relative_residual = 0;
+  bool converged = false;
+};
+
+class SparseSolver {
+ public:
+  virtual ~SparseSolver() = default;
+  // Solves a x = b for a symmetric positive definite `a`, starting from the x given (a warm
+  // start from the last solution saves iterations when the systems change slowly).
+  virtual SolveReport solve(const SparseRows& a, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+};
+
+// The solvers this build offers, by name: "cg_diagonal", "cg_incomplete_cholesky" and, built
+// with hypre, "boomeramg".
+std::vector<std::string> sparse_solver_names();
+// nullptr for a name not in sparse_solver_names().
+std::unique_ptr<SparseSolver> make_sparse_solver(const std::string& name,
+                                                 const SolverSettings& settings);
+
+}  // namespace sluice

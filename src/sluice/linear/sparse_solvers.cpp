@@ -1,0 +1,29 @@
+#include "sluice/linear/eigen_cg_solvers.hpp"
+#include "sluice/linear/sparse_solver.hpp"
+#ifdef SLUICE_WITH_HYPRE
+#include "sluice/linear/boomeramg_solver.hpp"
+#endif
+
+namespace sluice {
+
+std::vector<std::string> sparse_solver_names() {
+  std::vector<std::string> names{"cg_diagonal", "cg_incomplete_cholesky"};
+#ifdef SLUICE_WITH_HYPRE
+  names.push_back("boomeramg");
+#endif
+  return names;
+}
+
+std::unique_ptr<SparseSolver> make_sparse_solver(const std::string& name,
+                                                 const SolverSettings& settings) {
+  if (name == "cg_diagonal") return make_eigen_cg(CgPreconditioner::kDiagonal, settings);
+  if (name == "cg_incomplete_cholesky") {
+    return make_eigen_cg(CgPreconditioner::kIncompleteCholesky, settings);
+  }
+#ifdef SLUICE_WITH_HYPRE
+  if (name == "boomeramg") return make_boomeramg(settings);
+#endif
+  return nullptr;
+}
+
+}  // namespace sluice
