@@ -25,6 +25,7 @@ void print_summary(const sluice::RunSummary& r) {
                r.bodies, r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
                r.most_substeps_per_step);
   }
+  for (const auto& [name, value] : r.fluid_counters) fmt::print("  {}: {:.6g}\n", name, value);
   double total = 0;
   for (const auto& e : r.stages) total += e.seconds;
   for (const auto& e : r.stages) {

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""F2 of VALIDATION.md: runs cases/dam_break_2d.yaml at the CI spacing and finer, and plots the
-surge front against Koshizuka & Oka (1996). Writes docs/img/f2_dam_break_front.png and prints
-the RMS difference over t in [0, 0.70] s for each spacing.
+"""F2 of VALIDATION.md: runs cases/dam_break_2d.yaml with the wcsph and mps models at the CI
+spacing and finer, and plots the surge front against Koshizuka & Oka (1996). Writes
+docs/img/f2_dam_break_front.png and prints the RMS difference over t in [0, 0.70] s for each
+model and spacing.
 
 usage: /usr/bin/python3 validation/dam_break_2d.py [SPACING ...]   (default: 0.025 0.0125)
 """
@@ -33,11 +34,11 @@ def read_reference():
     return rows
 
 
-def run(spacing):
-    out = os.path.join(ROOT, "out", "validation", f"dam_break_2d_{spacing}")
+def run(model, spacing):
+    out = os.path.join(ROOT, "out", "validation", f"dam_break_2d_{model}_{spacing}")
     subprocess.run([SLUICE, "run", os.path.join(ROOT, "cases", "dam_break_2d.yaml"), "--out", out,
-                    "--end", "0.75", "--set", f"spacing={spacing}"], check=True,
-                   stdout=subprocess.DEVNULL)
+                    "--end", "0.75", "--set", f"spacing={spacing}", "--set",
+                    f"model.name={model}"], check=True, stdout=subprocess.DEVNULL)
     return read_probe(os.path.join(out, "probes.csv"), "front")
 
 
@@ -55,12 +56,15 @@ def main():
     fig = plt.figure(figsize=(6.4, 4.4))
     plt.plot([t for t, _ in reference], [x for _, x in reference], "ko",
              label="experiment (Koshizuka & Oka 1996)")
-    for spacing in spacings:
-        times, fronts = run(spacing)
-        errors = [interpolate(times, fronts, t) - x for t, x in reference if t <= 0.70]
-        rms = math.sqrt(sum(e * e for e in errors) / len(errors))
-        print(f"spacing {spacing} m: front RMS error {rms:.3f} m over {len(errors)} points")
-        plt.plot(times, fronts, "-", label=f"sluice wcsph, dx = {spacing} m (RMS {rms:.2f} m)")
+    for model, colour in (("wcsph", "tab:blue"), ("mps", "tab:red")):
+        for spacing, style in zip(spacings, ("-", "--", ":")):
+            times, fronts = run(model, spacing)
+            errors = [interpolate(times, fronts, t) - x for t, x in reference if t <= 0.70]
+            rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+            print(f"{model}, spacing {spacing} m: front RMS error {rms:.3f} m over "
+                  f"{len(errors)} points")
+            plt.plot(times, fronts, style, color=colour,
+                     label=f"sluice {model}, dx = {spacing} m (RMS {rms:.2f} m)")
     plt.axvline(0.70, color="0.7", lw=0.8)
     plt.xlabel("time [s]")
     plt.ylabel("surge front x [m]")

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sluice/core/stage.hpp"
@@ -59,6 +60,9 @@ class FluidSystem : public FluidExchange {
 
   virtual FluidSize size() const = 0;
   virtual FluidEnergy energy() const = 0;
+  // The model's own running totals, for the run's statistics (MPS: pressure solves and their
+  // iterations); none by default.
+  virtual std::vector<std::pair<std::string, double>> counters() const { return {}; }
   // The reach of the model's interactions (a particle model's support): walls are this thick,
   // and a body this far outside the domain has left it.
   virtual double interaction_radius() const = 0;

@@ -9,13 +9,13 @@ Probes::Probes(const std::vector<io::ProbeConfig>& probes, const std::string& cs
   for (const auto& p : probes_) {
     switch (p.kind) {
       case io::ProbeKind::kPressure:
-        header.push_back(p.name + " pressure [Pa]");
+        header.push_back(p.name + " [Pa]");
         break;
       case io::ProbeKind::kWaterHeight:
-        header.push_back(p.name + " water height [m]");
+        header.push_back(p.name + " [m]");
         break;
       case io::ProbeKind::kSurgeFront:
-        header.push_back(p.name + " front [m]");
+        header.push_back(p.name + " [m]");
         break;
     }
   }

@@ -31,6 +31,7 @@ struct RunSummary {
   std::size_t bodies = 0;
   long solid_substeps = 0;  // solid sub-steps over the run (bodies sub-cycle within a step)
   int most_substeps_per_step = 0;
+  std::vector<std::pair<std::string, double>> fluid_counters;  // FluidSystem::counters()
 
   double particle_steps_per_second() const {
     return wall_seconds > 0 ? static_cast<double>(particles) * steps / wall_seconds : 0;

@@ -77,6 +77,15 @@ class MpsModel final : public ParticleFluid<D> {
     return dt;
   }
 
+  std::vector<std::pair<std::string, double>> counters() const override {
+    if (explicit_variant()) return {};
+    return {{"pressure_solves", static_cast<double>(solves_)},
+            {"pressure_iterations_per_solve",
+             solves_ > 0 ? static_cast<double>(iterations_) / static_cast<double>(solves_) : 0},
+            {"pressure_unknowns_per_solve",
+             solves_ > 0 ? static_cast<double>(unknowns_) / static_cast<double>(solves_) : 0}};
+  }
+
   std::optional<std::string> check(const StepClock& clock) const override {
     if (failure_) return failure_;
     return ParticleFluid<D>::check(clock);
@@ -164,11 +173,25 @@ class MpsModel final : public ParticleFluid<D> {
   // and boundary particles that the fluid reaches.
   bool pressure_neighbour(std::size_t j) const { return active_[j] != 0; }
 
+  // Rows for the fluid and for the boundary particles that have fluid in the cells around them
+  // (a prefix count of fluid over the cell-sorted particles answers that per cell range): dry
+  // walls, most of a tall tank, cost nothing.
   void build_neighbours() {
     auto& s = this->state();
-    const auto& role = s.particles[role_];
-    neighbours_.build(s.particles.position, s.cells, s.cells.radius(),
-                      [&](std::size_t i) { return role[i] != kMpsDummy; });
+    const auto& ps = s.particles;
+    const auto& role = ps[role_];
+    fluid_before_.resize(ps.size() + 1);
+    fluid_before_[0] = 0;
+    for (std::size_t j = 0; j < ps.size(); ++j)
+      fluid_before_[j + 1] = fluid_before_[j] + (ps.is_fluid(j) ? 1 : 0);
+    neighbours_.build(ps.position, s.cells, s.cells.radius(), [&](std::size_t i) {
+      if (role[i] != kMpsBoundary) return role[i] == kMpsFluid;
+      bool wet = false;
+      s.cells.for_each_candidate_range(ps.position[i], [&](std::uint32_t begin, std::uint32_t end) {
+        wet = wet || fluid_before_[end] > fluid_before_[begin];
+      });
+      return wet;
+    });
   }
 
   // u* = u + dt (g + nu lap u), x* = x + dt u*. Walls and bodies are no-slip: their own
@@ -279,8 +302,12 @@ class MpsModel final : public ParticleFluid<D> {
 
   void solve(const StepClock& clock) {
     auto& ps = this->state().particles;
-    if (!equation_.solve(ps.pressure) && !failure_) {
-      const PressureEquationReport& r = equation_.report();
+    const bool solved = equation_.solve(ps.pressure);
+    const PressureEquationReport& r = equation_.report();
+    ++solves_;
+    iterations_ += r.iterations;
+    unknowns_ += r.unknowns;
+    if (!solved && !failure_) {
       failure_ = fmt::format(
           "the pressure solve ({}) did not reach its tolerance {:.3g} at step {}, t = {:.6g} s: "
           "relative residual {:.3g} after {} iterations ({} unknowns); raise "
@@ -349,10 +376,13 @@ class MpsModel final : public ParticleFluid<D> {
   BodySurfacePressure surface_pressure_;
   FieldHandle<std::int32_t> role_, surface_;
   FieldHandle<Real> number_density_;
-  std::vector<std::uint8_t> active_;  // per particle, valid from the number density stage on
+  std::vector<std::uint8_t> active_;
+  std::vector<std::uint32_t> fluid_before_;  // fluid among particles [0, k), cell-sorted  // per
+                                             // particle, valid from the number density stage on
   std::vector<Vec<D>> velocity_scratch_;
   Real max_speed_ = 0;
   std::optional<std::string> failure_;
+  long solves_ = 0, iterations_ = 0, unknowns_ = 0;
 };
 
 }  // namespace sluice
