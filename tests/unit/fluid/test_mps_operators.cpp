@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "mps_lattice.hpp"
 #include "sluice/fluid/mps/mps_operators.hpp"
 
 namespace sluice {
@@ -42,44 +43,10 @@ TEST(MpsLattice, ConstantsOfTheCubicLatticeInClosedForm) {
   EXPECT_NEAR(c.lambda, (6 * w1 + 24 * w2 + 24 * w3 + 24 * w4) / n0, 1e-12);
 }
 
-// A block of lattice points, sorted into a cell list with its neighbour list.
-template <int D>
-struct Lattice {
-  std::vector<Vec<D>> x;
-  CellList<D> cells;
-  NeighbourList<D> neighbours;
-  std::size_t centre = 0;
-
-  Lattice(int half_width, double l0, double re) {
-    std::vector<Vec<D>> points;
-    for (int i = -half_width; i <= half_width; ++i) {
-      for (int j = -half_width; j <= half_width; ++j) {
-        for (int k = (D == 3 ? -half_width : 0); k <= (D == 3 ? half_width : 0); ++k) {
-          Vec<D> p;
-          if constexpr (D == 2) {
-            p << i * l0, j * l0;
-          } else {
-            p << i * l0, j * l0, k * l0;
-          }
-          points.push_back(p + Vec<D>::Constant(0.3 * l0));  // off the origin: any place
-        }
-      }
-    }
-    cells = CellList<D>(points.front(), points.back(), re);
-    std::vector<std::uint32_t> order;
-    cells.sort(points, order);
-    for (std::uint32_t o : order) x.push_back(points[o]);
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      if ((x[i] - Vec<D>::Constant(0.3 * l0)).norm() < 1e-9) centre = i;
-    }
-    neighbours.build(x, cells, re, [](std::size_t) { return true; });
-  }
-};
-
 template <int D>
 void number_density_of_full_lattice_is_n0() {
   const double l0 = 0.02, re = 2.1 * l0;
-  Lattice<D> lattice(4, l0, re);
+  MpsTestLattice<D> lattice(4, l0, re);
   const MpsLatticeConstants c = full_lattice_constants<D>(l0, re);
   const MpsOperators<D> op(lattice.x, lattice.neighbours, MpsWeight{re}, c);
   int count = 0;
@@ -99,7 +66,7 @@ TEST(MpsOperators, NumberDensityOfAFullLatticeIsN0) {
 template <int D>
 void laplacian_of_quadratic_field() {
   const double l0 = 0.02, re = 3.1 * l0;
-  Lattice<D> lattice(5, l0, re);
+  MpsTestLattice<D> lattice(5, l0, re);
   const MpsOperators<D> op(lattice.x, lattice.neighbours, MpsWeight{re},
                            full_lattice_constants<D>(l0, re));
   std::vector<Real> f;
@@ -113,12 +80,43 @@ TEST(MpsOperators, LaplacianOfAQuadraticFieldIsExactOnTheLattice) {
   laplacian_of_quadratic_field<3>();
 }
 
+// The Laplacian on its own, wider radius (4.0 l0, Koshizuka & Oka 1996) over a neighbour list
+// of that radius: still exact for the quadratic field, while the number density keeps the
+// 2.1 l0 radius and its n0.
+template <int D>
+void laplacian_on_its_own_radius() {
+  const double l0 = 0.02, re = 2.1 * l0, wide = 4.0 * l0;
+  MpsTestLattice<D> lattice(6, l0, wide);
+  const MpsLatticeConstants c = full_lattice_constants<D>(l0, re);
+  const MpsOperators<D> op(lattice.x, lattice.neighbours, MpsWeight{re}, c, MpsWeight{wide},
+                           full_lattice_constants<D>(l0, wide), true);
+  std::vector<Real> f;
+  for (const auto& x : lattice.x) f.push_back(x.squaredNorm() - 2 * x[D - 1]);
+  const auto all = [](std::size_t) { return true; };
+  EXPECT_NEAR(op.laplacian(lattice.centre, f, all), 2.0 * D, 1e-9);
+  int count = 0;
+  EXPECT_NEAR(op.number_density(lattice.centre, all, count), c.n0, 1e-9 * c.n0);
+  EXPECT_EQ(count, c.neighbours);
+  // The coefficient is the wide weight's: nonzero at 3 l0, where the narrow weight is zero.
+  std::size_t far = lattice.centre;
+  for (std::size_t j = 0; j < lattice.x.size(); ++j) {
+    if (std::abs((lattice.x[j] - lattice.x[lattice.centre]).norm() - 3 * l0) < 1e-9) far = j;
+  }
+  ASSERT_NE(far, lattice.centre);
+  EXPECT_GT(op.laplacian_coefficient(lattice.centre, far), 0);
+}
+
+TEST(MpsOperators, LaplacianOnItsOwnWiderRadius) {
+  laplacian_on_its_own_radius<2>();
+  laplacian_on_its_own_radius<3>();
+}
+
 // A linear field: the plain gradient is exact on the full lattice; on a stretched lattice (still
 // symmetric, so p-hat shifts nothing) only the corrected one is.
 template <int D>
 void gradient_of_linear_field(bool stretched) {
   const double l0 = 0.02, re = 2.1 * l0;
-  Lattice<D> lattice(4, l0, re);
+  MpsTestLattice<D> lattice(4, l0, re);
   if (stretched) {
     for (auto& x : lattice.x) x[0] *= 0.9;  // closer along x: more neighbours that way
   }
@@ -148,7 +146,7 @@ TEST(MpsOperators, GradientOfALinearField) {
 
 TEST(MpsOperators, DivergenceOfALinearVelocityField) {
   const double l0 = 0.02, re = 2.1 * l0;
-  Lattice<3> lattice(4, l0, re);
+  MpsTestLattice<3> lattice(4, l0, re);
   const MpsOperators<3> op(lattice.x, lattice.neighbours, MpsWeight{re},
                            full_lattice_constants<3>(l0, re));
   std::vector<Vec<3>> u;

@@ -36,22 +36,33 @@ class MpsModel final : public ParticleFluid<D> {
  public:
   MpsModel(const MpsParameters& parameters, const io::CaseConfig& config,
            const BodyGeometry& bodies)
-      : ParticleFluid<D>(config, (parameters.re_over_dx + kMpsSkin) * config.spacing, bodies),
+      : ParticleFluid<D>(
+            config,
+            (std::max(parameters.re_over_dx, parameters.laplacian_re_over_dx) + kMpsSkin) *
+                config.spacing,
+            bodies),
         p_(parameters),
         density_(config.fluid.density),
         weight_{parameters.re_over_dx * config.spacing},
+        laplacian_weight_{parameters.laplacian_re_over_dx * config.spacing},
         lattice_(full_lattice_constants<D>(config.spacing, weight_.re)),
+        laplacian_lattice_(full_lattice_constants<D>(config.spacing, laplacian_weight_.re)),
         equation_(parameters.solver, parameters.solver_settings) {
     assign_roles(config, bodies);
   }
 
   std::string describe() const override {
     return fmt::format(
-        "mps ({}): r_e = {:.4g} m ({} dx), n0 = {:.4g}, lambda = {:.4g} dx^2, beta = {}, "
-        "gamma = {}, alpha = {:.3g} 1/Pa, negative pressure {}, {}",
+        "mps ({}): r_e = {:.4g} m ({} dx), n0 = {:.4g}, {}lambda = {:.4g} dx^2, beta = {}, "
+        "gamma = {}, alpha = {:.3g} 1/Pa ({} form), negative pressure {}, {}",
         explicit_variant() ? "explicit" : "incompressible", weight_.re, p_.re_over_dx, lattice_.n0,
-        lattice_.lambda / (this->state().spacing * this->state().spacing), p_.surface_threshold,
-        p_.source_relaxation, p_.compressibility, p_.keep_negative_pressure ? "kept" : "clamped",
+        laplacian_weight_.re == weight_.re
+            ? std::string()
+            : fmt::format("Laplacian r_e = {} dx with n0 = {:.4g} and ", p_.laplacian_re_over_dx,
+                          laplacian_lattice_.n0),
+        laplacian_lattice_.lambda / (this->state().spacing * this->state().spacing),
+        p_.surface_threshold, p_.source_relaxation, p_.compressibility,
+        p_.pressure_memory ? "rate" : "ikeda", p_.keep_negative_pressure ? "kept" : "clamped",
         explicit_variant()
             ? fmt::format("c0 = {:.4g} m/s", p_.sound_speed)
             : fmt::format("solver {} (tolerance {:.3g})", p_.solver, p_.solver_settings.tolerance));
@@ -94,7 +105,7 @@ class MpsModel final : public ParticleFluid<D> {
   // For tests: the operators over the present neighbour list, and the last solve.
   MpsOperators<D> operators() const {
     return MpsOperators<D>(this->state().particles.position, neighbours_, weight_, lattice_,
-                           p_.gradient_correction);
+                           laplacian_weight_, laplacian_lattice_, p_.gradient_correction);
   }
   const MpsLatticeConstants& lattice() const { return lattice_; }
   const PressureEquationReport& last_solve() const { return equation_.report(); }
@@ -291,12 +302,13 @@ class MpsModel final : public ParticleFluid<D> {
 
   PressureEquationInputs<D> inputs(Real dt) const {
     const auto& ps = this->state().particles;
-    PressureEquationInputs<D> in{operators(), ps.velocity, ps[number_density_], ps[surface_],
-                                 active_};
+    PressureEquationInputs<D> in{operators(),  ps.velocity, ps[number_density_],
+                                 ps[surface_], active_,     ps.pressure};
     in.dt = dt;
     in.density = density_;
     in.relaxation = p_.source_relaxation;
     in.compressibility = p_.compressibility;
+    in.pressure_memory = p_.pressure_memory;
     return in;
   }
 
@@ -369,8 +381,8 @@ class MpsModel final : public ParticleFluid<D> {
 
   MpsParameters p_;
   Real density_;
-  MpsWeight weight_;
-  MpsLatticeConstants lattice_;
+  MpsWeight weight_, laplacian_weight_;
+  MpsLatticeConstants lattice_, laplacian_lattice_;
   PressureEquation<D> equation_;
   NeighbourList<D> neighbours_;
   BodySurfacePressure surface_pressure_;

@@ -32,6 +32,16 @@ double within(io::MapReader& model, const std::string& key, double fallback, dou
   return value;
 }
 
+// C_e of an effective radius: at least the first ring of neighbours, at most a reach whose
+// neighbour count (some 380 in 3D) makes every operator crawl.
+double effective_radius(io::MapReader& model, const std::string& key, double fallback) {
+  const double value = model.optional_positive(key, fallback);
+  if (value < 1.5 || value > 4.5) {
+    model.fail(key, fmt::format("must lie in [1.5, 4.5], got {}", value));
+  }
+  return value;
+}
+
 }  // namespace
 
 MpsParameters read_mps_parameters(const io::CaseConfig& config) {
@@ -42,14 +52,13 @@ MpsParameters read_mps_parameters(const io::CaseConfig& config) {
       one_of(model, "variant", "incompressible", {"incompressible", "explicit"}) == "explicit"
           ? MpsVariant::kExplicit
           : MpsVariant::kIncompressible;
-  p.re_over_dx = model.optional_positive("re_over_dx", p.re_over_dx);
-  if (p.re_over_dx < 1.5 || p.re_over_dx > 4.5) {
-    model.fail("re_over_dx", fmt::format("must lie in [1.5, 4.5], got {}", p.re_over_dx));
-  }
+  p.re_over_dx = effective_radius(model, "re_over_dx", p.re_over_dx);
+  p.laplacian_re_over_dx = effective_radius(model, "laplacian_re_over_dx", p.re_over_dx);
   p.surface_threshold = within(model, "surface_threshold", p.surface_threshold, 0, 1, false);
   p.surface_count_ratio = within(model, "surface_count_ratio", p.surface_count_ratio, 0, 1, false);
   p.source_relaxation = within(model, "source_relaxation", p.source_relaxation, 0, 1, true);
   p.compressibility = model.optional_non_negative("compressibility", p.compressibility);
+  p.pressure_memory = one_of(model, "compressibility_form", "rate", {"rate", "ikeda"}) == "rate";
   p.keep_negative_pressure =
       one_of(model, "negative_pressure", "clamp", {"clamp", "keep"}) == "keep";
   p.collision_distance = within(model, "collision_distance", p.collision_distance, 0, 1, true);

@@ -17,10 +17,12 @@ enum class MpsVariant {
 struct MpsParameters {
   MpsVariant variant = MpsVariant::kIncompressible;
   double re_over_dx = 2.1;            // C_e: effective radius r_e = C_e l0
+  double laplacian_re_over_dx = 0;    // the Laplacian's own C_e; 0 = re_over_dx
   double surface_threshold = 0.97;    // beta: surface when n* < beta n0 ...
   double surface_count_ratio = 0.85;  // ... and fewer than this share of n0's neighbours
   double source_relaxation = 0.01;    // gamma: weight of the density-deviation source
   double compressibility = 4.5e-10;   // alpha in 1/Pa (water's own)
+  bool pressure_memory = true;        // false: Ikeda's form, which forgets p^n (comparison)
   bool keep_negative_pressure = false;
   bool gradient_correction = true;     // the corrective matrix in the pressure gradient
   double artificial_viscosity = 0.05;  // explicit variant: nu_a = alpha c0 l0
