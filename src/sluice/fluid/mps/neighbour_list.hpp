@@ -1,9 +1,11 @@
 // Each particle's neighbours within a radius, found once per step right after the neighbour
 // sort and kept in one array, rows in particle order: every operator of an MPS step reads
-// them instead of scanning the cells again. Built in two parallel passes (count, then fill),
-// each row by one thread, so the list is the same on any number of threads.
+// them instead of scanning the cells again. Built in one scan of the cells: blocks of rows,
+// each filled by one thread into a buffer of its own (kept from step to step), then copied
+// into place; so the list is the same on any number of threads.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -22,22 +24,25 @@ class NeighbourList {
              Wanted&& wanted) {
     const std::size_t n = positions.size();
     const Real radius2 = radius * radius;
+    const std::size_t blocks = (n + kBlock - 1) / kBlock;
+    if (buffers_.size() < blocks) buffers_.resize(blocks);
     start_.assign(n + 1, 0);
-    exec::Default::for_each_balanced(n, [&](std::size_t i) {
-      if (!wanted(i)) return;
-      std::uint32_t count = 0;
-      cells.for_each_neighbor(positions, i, radius2,
-                              [&](std::size_t, const Vec<D>&, Real) { ++count; });
-      start_[i + 1] = count;
+    exec::Default::for_each_balanced(blocks, [&](std::size_t b) {
+      std::vector<std::uint32_t>& buffer = buffers_[b];
+      buffer.clear();
+      for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+        if (!wanted(i)) continue;
+        const std::size_t before = buffer.size();
+        cells.for_each_neighbor(positions, i, radius2, [&](std::size_t j, const Vec<D>&, Real) {
+          buffer.push_back(static_cast<std::uint32_t>(j));
+        });
+        start_[i + 1] = static_cast<std::uint32_t>(buffer.size() - before);
+      }
     });
     for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
     index_.resize(start_[n]);
-    exec::Default::for_each_balanced(n, [&](std::size_t i) {
-      if (!wanted(i)) return;
-      std::uint32_t k = start_[i];
-      cells.for_each_neighbor(positions, i, radius2, [&](std::size_t j, const Vec<D>&, Real) {
-        index_[k++] = static_cast<std::uint32_t>(j);
-      });
+    exec::Default::for_each(blocks, [&](std::size_t b) {
+      std::copy(buffers_[b].begin(), buffers_[b].end(), index_.begin() + start_[b * kBlock]);
     });
   }
 
@@ -54,6 +59,8 @@ class NeighbourList {
  private:
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> index_;
+  static constexpr std::size_t kBlock = 256;  // rows per buffer
+  std::vector<std::vector<std::uint32_t>> buffers_;
 };
 
 }  // namespace sluice
