@@ -1,5 +1,5 @@
-// The `sluice` command line: run a case or check it. Exit codes: 0 done, 1 internal failure,
-// 2 bad input, 3 the run diverged.
+// The `sluice` command line: run a case, check it, or sweep its parameters. Exit codes: 0 done,
+// 1 internal failure, 2 bad input, 3 the run (or a run of a sweep) diverged.
 #include <fmt/format.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -11,6 +11,7 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/runner.hpp"
+#include "sweep_command.hpp"
 
 namespace {
 
@@ -59,6 +60,21 @@ int main(int argc, char** argv) {
   check->add_option("CASE", case_path, "case file (YAML)")->required();
   check->add_option("--set", overrides, "override a case key: key.path=value (repeatable)");
 
+  sluice::SweepOptions sweep_options;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "run a case for every combination of values; one summary table of the runs");
+  sweep->add_option("CASE", sweep_options.case_path, "case file (YAML)")->required();
+  sweep
+      ->add_option("--set", sweep_options.settings,
+                   "key.path=v1,v2,... (an axis of the sweep) or key.path=value (every run)")
+      ->required();
+  sweep->add_option("--out", sweep_options.out_dir,
+                    "output directory (default: out/sweep_CASE_NAME)");
+  sweep->add_option("--jobs", sweep_options.jobs, "runs at once (default: one per core)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--end", sweep_options.end_time, "end time of every run")
+      ->check(CLI::PositiveNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -68,6 +84,13 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (sweep->parsed()) {
+      sweep_options.self = "/proc/self/exe";
+      char self[4096];
+      const ssize_t length = readlink("/proc/self/exe", self, sizeof(self) - 1);
+      if (length > 0) sweep_options.self.assign(self, static_cast<std::size_t>(length));
+      return sluice::run_sweep(sweep_options);
+    }
     sluice::exec::set_thread_count(threads);
     const sluice::io::CaseConfig config = sluice::io::read_case(case_path, overrides);
     if (check->parsed()) {

@@ -6,20 +6,16 @@ Probes::Probes(const std::vector<io::ProbeConfig>& probes, const std::string& cs
     : probes_(probes) {
   if (probes_.empty() || csv_path.empty()) return;
   std::vector<std::string> header{"time [s]"};
-  for (const auto& p : probes_) {
-    switch (p.kind) {
-      case io::ProbeKind::kPressure:
-        header.push_back(p.name + " [Pa]");
-        break;
-      case io::ProbeKind::kWaterHeight:
-        header.push_back(p.name + " [m]");
-        break;
-      case io::ProbeKind::kSurgeFront:
-        header.push_back(p.name + " [m]");
-        break;
-    }
-  }
+  for (const std::string& label : labels()) header.push_back(label);
   csv_ = std::make_unique<io::CsvWriter>(csv_path, header);
+}
+
+std::vector<std::string> Probes::labels() const {
+  std::vector<std::string> out;
+  for (const auto& p : probes_) {
+    out.push_back(p.name + (p.kind == io::ProbeKind::kPressure ? " [Pa]" : " [m]"));
+  }
+  return out;
 }
 
 std::vector<double> Probes::measure(const FluidSystem& fluid) const {

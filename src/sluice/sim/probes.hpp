@@ -20,6 +20,8 @@ class Probes {
   bool empty() const { return probes_.empty(); }
   // Appends one row for the time.
   void record(double time, const FluidSystem& fluid);
+  // Each probe's column label, its name and unit: "front [m]", "P1 [Pa]".
+  std::vector<std::string> labels() const;
   // The values of one row, in the order of the case's probes (used by tests too).
   std::vector<double> measure(const FluidSystem& fluid) const;
 

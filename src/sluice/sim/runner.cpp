@@ -118,6 +118,10 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.most_substeps_per_step = sim.coupler().most_substeps();
   summary.stages = timers.entries();
   summary.fluid_counters = fluid.counters();
+  const std::vector<std::string> labels = probes.labels();
+  const std::vector<double> values = probes.measure(fluid);
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    summary.final_probes.emplace_back(labels[k], values[k]);
   return summary;
 }
 
@@ -155,9 +159,12 @@ std::string stats_json(const RunSummary& r) {
     if (!stages.empty()) stages += ",\n";
     stages += fmt::format("    \"{}\": {:.6f}", e.name, e.seconds);
   }
-  std::string counters;
-  for (const auto& [name, value] : r.fluid_counters)
-    counters += fmt::format("{}\"{}\": {:.9g}", counters.empty() ? "" : ", ", name, value);
+  const auto json_map = [](const std::vector<std::pair<std::string, double>>& entries) {
+    std::string text;
+    for (const auto& [name, value] : entries)
+      text += fmt::format("{}\"{}\": {:.9g}", text.empty() ? "" : ", ", name, value);
+    return text;
+  };
   const double fluid_rate =
       r.wall_seconds > 0 ? static_cast<double>(r.fluid_particles) * r.steps / r.wall_seconds : 0;
   return fmt::format(
@@ -167,13 +174,13 @@ std::string stats_json(const RunSummary& r) {
       "  \"wall_seconds_per_simulated_second\": {:.6g},\n  \"frames\": {},\n"
       "  \"bodies\": {},\n  \"solid_substeps\": {},\n  \"solid_substeps_per_step\": {:.6g},\n"
       "  \"most_solid_substeps_in_a_step\": {},\n"
-      "  \"fluid_counters\": {{{}}},\n"
+      "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
       r.particles, r.fluid_particles, r.steps, r.simulated_time, r.wall_seconds, r.threads,
       r.particle_steps_per_second(), fluid_rate,
       r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0, r.frames, r.bodies,
       r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
-      r.most_substeps_per_step, counters, stages);
+      r.most_substeps_per_step, json_map(r.fluid_counters), json_map(r.final_probes), stages);
 }
 
 }  // namespace sluice

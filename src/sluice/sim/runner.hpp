@@ -32,6 +32,7 @@ struct RunSummary {
   long solid_substeps = 0;  // solid sub-steps over the run (bodies sub-cycle within a step)
   int most_substeps_per_step = 0;
   std::vector<std::pair<std::string, double>> fluid_counters;  // FluidSystem::counters()
+  std::vector<std::pair<std::string, double>> final_probes;    // each probe at the end
 
   double particle_steps_per_second() const {
     return wall_seconds > 0 ? static_cast<double>(particles) * steps / wall_seconds : 0;
