@@ -19,12 +19,7 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
   if (const auto found = factories_.find(config.model_name); found != factories_.end())
     return found->second(config, bodies);
   io::MapReader model(config.source, config.model, "model", config.model_line);
-  const std::vector<std::string> available = names();
-  std::string problem = fmt::format("unknown model '{}'; available: {}", config.model_name,
-                                    fmt::join(available, ", "));
-  const std::string guess = io::closest_match(config.model_name, available);
-  if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-  model.fail("name", problem);
+  model.fail_choice("name", "model", config.model_name, names());
 }
 
 template <int D>

@@ -18,19 +18,6 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
 
-// Fails with "unknown X 'word', expected ..." and a suggestion.
-[[noreturn]] void fail_choice(const MapReader& map, const std::string& key, const std::string& what,
-                              const std::string& word, const std::vector<std::string>& choices) {
-  std::string expected;
-  for (std::size_t k = 0; k < choices.size(); ++k) {
-    expected += (k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + choices[k];
-  }
-  std::string problem = fmt::format("unknown {} '{}', expected {}", what, word, expected);
-  const std::string guess = closest_match(word, choices);
-  if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-  map.fail(key, problem);
-}
-
 // An angle or angular quantity: a vector about x, y, z in 3D, one number about y in 2D.
 Vec3 read_rotation(MapReader& map, const std::string& key, double unit) {
   if (!map.has(key)) return Vec3::Zero();
@@ -55,7 +42,7 @@ PrescribedConfig read_prescribed(MapReader& map, const std::string& case_file) {
     p.table_file = (std::filesystem::path(case_file).parent_path() / file).string();
     p.table = read_pose_table(p.table_file, map, "file");
   } else {
-    fail_choice(map, "type", "prescribed motion", type, {"constant_velocity", "sinusoid", "table"});
+    map.fail_choice("type", "prescribed motion", type, {"constant_velocity", "sinusoid", "table"});
   }
   map.finish();
   return p;
@@ -69,7 +56,7 @@ void read_locks(MapReader& map, BodyConfig& b) {
   const std::vector<std::string> names = {"x", "y", "z", "rx", "ry", "rz"};
   for (const auto& dof : map.optional<std::vector<std::string>>("locked", {})) {
     const auto found = std::find(names.begin(), names.end(), dof);
-    if (found == names.end()) fail_choice(map, "locked", "degree of freedom", dof, names);
+    if (found == names.end()) map.fail_choice("locked", "degree of freedom", dof, names);
     const auto k = found - names.begin();
     (k < 3 ? b.locked_translation[k] : b.locked_rotation[k - 3]) = true;
   }
@@ -99,7 +86,7 @@ void read_shape(MapReader& map, BodyConfig& b, const std::string& case_file) {
     b.mesh = read_mesh(b.mesh_file, b.mesh_scale, map.source().file, map.line_of("file"),
                        map.path_of("file"));
   } else {
-    fail_choice(map, "shape", "body shape", shape, {"box", "sphere", "cylinder", "mesh"});
+    map.fail_choice("shape", "body shape", shape, {"box", "sphere", "cylinder", "mesh"});
   }
 }
 
@@ -166,7 +153,7 @@ BodyConfig read_body(MapReader& map, std::size_t index, const std::string& case_
     MapReader prescribed = map.map("prescribed");
     b.prescribed = read_prescribed(prescribed, case_file);
   } else {
-    fail_choice(map, "motion", "motion", motion, {"free", "fixed", "prescribed"});
+    map.fail_choice("motion", "motion", motion, {"free", "fixed", "prescribed"});
   }
   if (b.motion != BodyMotion::kPrescribed && map.has("prescribed")) {
     map.fail("prescribed", "only read when motion is prescribed");

@@ -63,11 +63,7 @@ WallConfig read_wall(MapReader& wall, const CaseConfig& c, size_t index) {
       w.open_sides = wall.optional<std::vector<std::string>>("open", {});
       for (const auto& side : w.open_sides) {
         if (std::find(kTankSides.begin(), kTankSides.end(), side) == kTankSides.end()) {
-          std::string problem =
-              fmt::format("unknown side '{}', expected one of x-, x+, y-, y+, z-, z+", side);
-          const std::string guess = closest_match(side, kTankSides);
-          if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-          wall.fail("open", problem);
+          wall.fail_choice("open", "side", side, kTankSides);
         }
       }
     }
@@ -79,10 +75,7 @@ WallConfig read_wall(MapReader& wall, const CaseConfig& c, size_t index) {
     if (!(w.normal.norm() > 0)) wall.fail("normal", "must not be the zero vector");
     w.normal.normalize();
   } else {
-    std::string problem = fmt::format("unknown wall type '{}', expected tank, box or plane", type);
-    const std::string guess = closest_match(type, {"tank", "box", "plane"});
-    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-    wall.fail("type", problem);
+    wall.fail_choice("type", "wall type", type, {"tank", "box", "plane"});
   }
   w.material = read_material(wall, w.material);
   wall.finish();
@@ -109,11 +102,7 @@ ProbeConfig read_probe(MapReader& probe, size_t index, int dimension) {
     }
     p.axis = axis == "x" ? 0 : 1;
   } else {
-    std::string problem = fmt::format(
-        "unknown probe type '{}', expected pressure, water_height or surge_front", type);
-    const std::string guess = closest_match(type, {"pressure", "water_height", "surge_front"});
-    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-    probe.fail("type", problem);
+    probe.fail_choice("type", "probe type", type, {"pressure", "water_height", "surge_front"});
   }
   probe.finish();
   return p;
@@ -177,15 +166,8 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   c.body_interval = top.optional_positive("body_interval", c.probe_interval);
   if (top.has("contact")) {
     MapReader contact = top.map("contact");
-    c.contact.solver = contact.optional<std::string>("solver", c.contact.solver);
-    const std::vector<std::string> solvers = shipped_contact_solvers().names();
-    if (std::find(solvers.begin(), solvers.end(), c.contact.solver) == solvers.end()) {
-      std::string problem = fmt::format("unknown contact solver '{}'; available: {}",
-                                        c.contact.solver, fmt::join(solvers, ", "));
-      const std::string guess = closest_match(c.contact.solver, solvers);
-      if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-      contact.fail("solver", problem);
-    }
+    c.contact.solver = contact.optional_choice("solver", c.contact.solver, "contact solver",
+                                               shipped_contact_solvers().names());
     c.contact.distance = contact.optional_positive("distance", c.spacing);
     c.contact.substep_fraction =
         contact.optional_positive("substep_fraction", c.contact.substep_fraction);

@@ -115,6 +115,26 @@ std::pair<std::string, int> MapReader::place_of(const std::string& key) const {
   return {file, line_for(file, line_of(key))};
 }
 
+std::string MapReader::optional_choice(const std::string& key, const std::string& fallback,
+                                       const std::string& what,
+                                       const std::vector<std::string>& choices) {
+  const std::string value = optional<std::string>(key, fallback);
+  if (std::find(choices.begin(), choices.end(), value) == choices.end()) {
+    fail_choice(key, what, value, choices);
+  }
+  return value;
+}
+
+void MapReader::fail_choice(const std::string& key, const std::string& what,
+                            const std::string& value,
+                            const std::vector<std::string>& choices) const {
+  std::string problem = fmt::format("unknown {} '{}'; expected one of: ", what, value);
+  for (std::size_t k = 0; k < choices.size(); ++k) problem += (k ? ", " : "") + choices[k];
+  const std::string guess = closest_match(value, choices);
+  if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
+  fail(key, problem);
+}
+
 void MapReader::fail(const std::string& key, const std::string& problem) const {
   const auto [file, line] = place_of(key);
   throw InputError(file, line, path_of(key), problem);

@@ -55,7 +55,15 @@ class MapReader {
   // Reports the first key that was never read, suggesting the closest key asked for.
   void finish() const;
 
+  // A text that must be one of `choices`; `what` names it in the message of fail_choice.
+  std::string optional_choice(const std::string& key, const std::string& fallback,
+                              const std::string& what, const std::vector<std::string>& choices);
+
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+  // "unknown WHAT 'value'; expected one of: a, b, c (did you mean 'a'?)"
+  [[noreturn]] void fail_choice(const std::string& key, const std::string& what,
+                                const std::string& value,
+                                const std::vector<std::string>& choices) const;
   // Fails at the mapping itself (for problems that involve several keys).
   [[noreturn]] void fail_here(const std::string& problem) const;
 

@@ -39,7 +39,7 @@ TEST(AddingAModel, RegisteredNextToTheShippedOnes) {
     Simulation<2> sim(still_tank("  name: stil_water\n"), models);
     FAIL() << "an unknown model must be an input error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("available: mps, still_water, wcsph (did you mean "
+    EXPECT_NE(std::string(e.what()).find("expected one of: mps, still_water, wcsph (did you mean "
                                          "'still_water'?)"),
               std::string::npos)
         << e.what();

@@ -8,18 +8,6 @@ namespace sluice {
 
 namespace {
 
-// A string option that must be one of `choices`; the message lists them and guesses a typo.
-std::string one_of(io::MapReader& model, const std::string& key, const std::string& fallback,
-                   const std::vector<std::string>& choices) {
-  const std::string value = model.optional<std::string>(key, fallback);
-  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
-  std::string problem =
-      fmt::format("unknown value '{}'; expected one of: {}", value, fmt::join(choices, ", "));
-  const std::string guess = io::closest_match(value, choices);
-  if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-  model.fail(key, problem);
-}
-
 // A number inside (low, high) or [low, high].
 double within(io::MapReader& model, const std::string& key, double fallback, double low,
               double high, bool closed) {
@@ -48,19 +36,21 @@ MpsParameters read_mps_parameters(const io::CaseConfig& config) {
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.required<std::string>("name");
   MpsParameters p;
-  p.variant =
-      one_of(model, "variant", "incompressible", {"incompressible", "explicit"}) == "explicit"
-          ? MpsVariant::kExplicit
-          : MpsVariant::kIncompressible;
+  p.variant = model.optional_choice("variant", "incompressible", "variant",
+                                    {"incompressible", "explicit"}) == "explicit"
+                  ? MpsVariant::kExplicit
+                  : MpsVariant::kIncompressible;
   p.re_over_dx = effective_radius(model, "re_over_dx", p.re_over_dx);
   p.laplacian_re_over_dx = effective_radius(model, "laplacian_re_over_dx", p.re_over_dx);
   p.surface_threshold = within(model, "surface_threshold", p.surface_threshold, 0, 1, false);
   p.surface_count_ratio = within(model, "surface_count_ratio", p.surface_count_ratio, 0, 1, false);
   p.source_relaxation = within(model, "source_relaxation", p.source_relaxation, 0, 1, true);
   p.compressibility = model.optional_non_negative("compressibility", p.compressibility);
-  p.pressure_memory = one_of(model, "compressibility_form", "rate", {"rate", "ikeda"}) == "rate";
+  p.pressure_memory = model.optional_choice("compressibility_form", "rate", "compressibility form",
+                                            {"rate", "ikeda"}) == "rate";
   p.keep_negative_pressure =
-      one_of(model, "negative_pressure", "clamp", {"clamp", "keep"}) == "keep";
+      model.optional_choice("negative_pressure", "clamp", "negative-pressure rule",
+                            {"clamp", "keep"}) == "keep";
   p.collision_distance = within(model, "collision_distance", p.collision_distance, 0, 1, true);
   p.collision_restitution =
       within(model, "collision_restitution", p.collision_restitution, 0, 1, true);
@@ -72,7 +62,7 @@ MpsParameters read_mps_parameters(const io::CaseConfig& config) {
   p.sound_speed = model.optional_positive("sound_speed", 0);
   p.speed_factor = model.optional_positive("speed_factor", p.speed_factor);
   p.max_speed = model.optional_positive("max_speed", 0);
-  p.solver = one_of(model, "solver", p.solver, sparse_solver_names());
+  p.solver = model.optional_choice("solver", p.solver, "solver", sparse_solver_names());
   p.solver_settings.tolerance =
       model.optional_positive("solver_tolerance", p.solver_settings.tolerance);
   if (p.solver_settings.tolerance >= 1) {

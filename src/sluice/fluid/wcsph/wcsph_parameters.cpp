@@ -16,18 +16,9 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.required<std::string>("name");
   WcsphParameters p;
-  const std::string kernel = model.optional<std::string>("kernel", "wendland");
-  if (kernel == "wendland") {
-    p.kernel = KernelChoice::kWendlandC2;
-  } else if (kernel == "cubic_spline") {
-    p.kernel = KernelChoice::kCubicSpline;
-  } else {
-    std::string problem =
-        fmt::format("unknown kernel '{}', expected wendland or cubic_spline", kernel);
-    const std::string guess = io::closest_match(kernel, {"wendland", "cubic_spline"});
-    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-    model.fail("kernel", problem);
-  }
+  const std::string kernel =
+      model.optional_choice("kernel", "wendland", "kernel", {"wendland", "cubic_spline"});
+  p.kernel = kernel == "wendland" ? KernelChoice::kWendlandC2 : KernelChoice::kCubicSpline;
   p.h_over_dx = model.optional_positive("h_over_dx", p.kernel == KernelChoice::kWendlandC2
                                                          ? WendlandC2<3>::kDefaultHOverDx
                                                          : CubicSpline<3>::kDefaultHOverDx);
@@ -49,15 +40,8 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
     model.fail("wall_slip", fmt::format("expected no_slip or free_slip, got '{}'", slip));
   }
   p.no_slip = slip == "no_slip";
-  p.boundary = model.optional<std::string>("boundary", p.boundary);
-  const std::vector<std::string> boundaries = wcsph_boundaries<3, WendlandC2<3>>().names();
-  if (std::find(boundaries.begin(), boundaries.end(), p.boundary) == boundaries.end()) {
-    std::string problem = fmt::format("unknown boundary treatment '{}'; available: {}", p.boundary,
-                                      fmt::join(boundaries, ", "));
-    const std::string guess = io::closest_match(p.boundary, boundaries);
-    if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-    model.fail("boundary", problem);
-  }
+  p.boundary = model.optional_choice("boundary", p.boundary, "boundary treatment",
+                                     wcsph_boundaries<3, WendlandC2<3>>().names());
   model.finish();
 
   if (p.sound_speed == 0) {
