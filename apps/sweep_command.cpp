@@ -8,7 +8,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -132,8 +134,11 @@ int run_sweep(const SweepOptions& o) {
     }
     int status = 0;
     const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0 && errno != EINTR) {
+      throw std::runtime_error(std::string("waiting for the runs: ") + strerror(errno));
+    }
     const auto job = running.find(pid);
-    if (pid < 0 || job == running.end()) continue;
+    if (job == running.end()) continue;  // interrupted, or not one of ours
     const std::size_t k = job->second.run;
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - job->second.start).count();
