@@ -21,6 +21,7 @@
 #include "sluice/io/sweep_plan.hpp"
 #include "sluice/io/sweep_table.hpp"
 #include "sluice/io/vtk_writer.hpp"
+#include "sluice/sim/runner.hpp"
 
 extern char** environ;
 
@@ -106,9 +107,14 @@ int run_sweep(const SweepOptions& o) {
   for (const std::string& s : o.settings) settings.push_back(io::parse_sweep_setting(s));
   const std::vector<io::SweepRun> runs = io::sweep_runs(settings);
   const std::vector<std::string> keys = io::sweep_axes(settings);
-  // Every combination is read and validated before anything runs or is written.
+  // Every combination is read and built (the model checks its own keys) before anything runs
+  // or is written, as `sluice check` would.
   std::string name;
-  for (const io::SweepRun& run : runs) name = io::read_case(o.case_path, run.overrides).name;
+  for (const io::SweepRun& run : runs) {
+    const io::CaseConfig config = io::read_case(o.case_path, run.overrides);
+    check_case(config);
+    name = config.name;
+  }
   const std::string out_dir = o.out_dir.empty() ? "out/sweep_" + name : o.out_dir;
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);

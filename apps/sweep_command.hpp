@@ -17,8 +17,9 @@ struct SweepOptions {
   std::string self;                   // this program, to start the runs
 };
 
-// Checks every combination first (bad input: InputError before anything runs), then runs
-// them. Returns the exit code: 0 when every run finished, 3 when one diverged or failed.
+// Checks every combination first, as `sluice check` (bad input: InputError before anything
+// runs or is written), then runs them. Returns the exit code: 0 when every run finished, 3 when one
+// diverged or failed.
 int run_sweep(const SweepOptions& options);
 
 }  // namespace sluice
