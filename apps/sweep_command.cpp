@@ -34,7 +34,27 @@ struct RunningJob {
   std::chrono::steady_clock::time_point start;
 };
 
-// Starts `sluice run` for one combination with its output and messages in `dir`.
+// Starts args[0] with args; with `log`, its stdout and stderr go to that file. Throws
+// std::runtime_error when it cannot start.
+pid_t spawn(std::vector<std::string> args, const std::string& log = "") {
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  if (!log.empty()) {
+    posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, log.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&files, STDOUT_FILENO, STDERR_FILENO);
+  }
+  pid_t pid = 0;
+  const int failed = posix_spawn(&pid, argv[0], &files, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  if (failed != 0) throw std::runtime_error("cannot start " + args[0] + ": " + strerror(failed));
+  return pid;
+}
+
+// Starts `sluice run` for one combination with its output in `dir`, its messages in dir.log.
 pid_t start_run(const SweepOptions& o, const io::SweepRun& run, const std::string& dir,
                 int threads) {
   std::vector<std::string> args{o.self,
@@ -54,20 +74,7 @@ pid_t start_run(const SweepOptions& o, const io::SweepRun& run, const std::strin
     args.push_back("--set");
     args.push_back(s);
   }
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const std::string log = dir + ".log";
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                   0644);
-  posix_spawn_file_actions_adddup2(&files, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = 0;
-  const int failed = posix_spawn(&pid, o.self.c_str(), &files, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&files);
-  if (failed != 0) throw std::runtime_error("cannot start " + o.self + ": " + strerror(failed));
-  return pid;
+  return spawn(std::move(args), dir + ".log");
 }
 
 std::string status_of(int wait_status) {
@@ -88,14 +95,9 @@ void draw_plots(const std::string& out_dir) {
     fmt::print("plots: not drawn ({} or {} missing)\n", python, script);
     return;
   }
-  std::vector<std::string> args{python, script, out_dir};
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
   int status = 0;
-  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0 ||
-      waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  if (waitpid(spawn({python, script, out_dir}), &status, 0) < 0 || !WIFEXITED(status) ||
+      WEXITSTATUS(status) != 0) {
     fmt::print("plots: {} {} {} failed\n", python, script, out_dir);
   }
 }
