@@ -22,6 +22,8 @@ using StageList = std::vector<std::unique_ptr<StepStage>>;
 struct FluidEnergy {
   double kinetic = 0;
   double potential = 0;  // relative to z = 0 along -g, as the bodies'
+  double elastic = 0;    // stored in the model's boundary springs (penalty-sph)
+  double mass = 0;       // of the fluid [kg]
 };
 
 // How big the fluid is: its elements (particles or cells) and, of them, the fluid ones.
@@ -59,7 +61,7 @@ class FluidSystem : public FluidExchange {
   virtual double last_good_time() const = 0;
 
   virtual FluidSize size() const = 0;
-  virtual FluidEnergy energy() const = 0;
+  virtual FluidEnergy energy() const = 0;  // and the fluid's mass
   // The model's own running totals, for the run's statistics (MPS: pressure solves and their
   // iterations); none by default.
   virtual std::vector<std::pair<std::string, double>> counters() const { return {}; }

@@ -4,6 +4,7 @@
 
 #include "sluice/fluid/body_particles.hpp"
 #include "sluice/fluid/mps/mps_factory.hpp"
+#include "sluice/fluid/penalty_sph/penalty_sph_factory.hpp"
 #include "sluice/fluid/wcsph/wcsph_factory.hpp"
 
 namespace sluice {
@@ -27,6 +28,7 @@ ModelRegistry shipped_models() {
   ModelRegistry registry;
   registry.add("wcsph", make_wcsph<D>);
   registry.add("mps", make_mps<D>);
+  registry.add("penalty-sph", make_penalty_sph<D>);
   return registry;
 }
 

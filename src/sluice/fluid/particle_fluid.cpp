@@ -166,6 +166,7 @@ FluidEnergy ParticleFluid<D>::energy() const {
     if (!ps.is_fluid(i)) continue;
     e.kinetic += 0.5 * ps.mass[i] * ps.velocity[i].squaredNorm();
     e.potential -= ps.mass[i] * state_.gravity.dot(ps.position[i]);
+    e.mass += ps.mass[i];
   }
   return e;
 }

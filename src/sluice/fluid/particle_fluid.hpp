@@ -53,7 +53,7 @@ class ParticleFluid : public FluidSystem {
   io::PolyFrame last_good_frame() const override { return frame_of(last_good_); }
   double last_good_time() const override { return last_good_time_; }
   FluidSize size() const override;
-  FluidEnergy energy() const override;
+  FluidEnergy energy() const override;  // kinetic, potential and mass of the fluid
   double interaction_radius() const override { return radius_; }
 
  protected:

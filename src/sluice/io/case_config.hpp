@@ -89,6 +89,9 @@ struct CaseConfig {
   bool has_fluid() const { return !fluid.blocks.empty(); }
 };
 
+// A `{min, max}` box whose max exceeds its min on every axis of the case's dimension.
+AxisBox read_box(MapReader& map, int dimension);
+
 // Reads and validates a case file. `overrides` are "key.path=value" strings from --set.
 // Throws InputError naming the file, line and key of the first problem found.
 CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides = {});

@@ -17,18 +17,6 @@ namespace {
 
 const std::vector<std::string> kTankSides = {"x-", "x+", "y-", "y+", "z-", "z+"};
 
-AxisBox read_box(MapReader& map, int dimension) {
-  AxisBox box{map.required<Vec3>("min"), map.required<Vec3>("max")};
-  for (int a = 0; a < 3; ++a) {
-    if (dimension == 2 && a == 1) continue;
-    if (!(box.max[a] > box.min[a])) {
-      map.fail("max",
-               fmt::format("must be greater than 'min' in every component (axis {})", "xyz"[a]));
-    }
-  }
-  return box;
-}
-
 FluidConfig read_fluid(MapReader fluid, const CaseConfig& c) {
   FluidConfig out;
   out.density = fluid.optional_positive("density", out.density);
@@ -109,6 +97,18 @@ ProbeConfig read_probe(MapReader& probe, size_t index, int dimension) {
 }
 
 }  // namespace
+
+AxisBox read_box(MapReader& map, int dimension) {
+  AxisBox box{map.required<Vec3>("min"), map.required<Vec3>("max")};
+  for (int a = 0; a < 3; ++a) {
+    if (dimension == 2 && a == 1) continue;
+    if (!(box.max[a] > box.min[a])) {
+      map.fail("max",
+               fmt::format("must be greater than 'min' in every component (axis {})", "xyz"[a]));
+    }
+  }
+  return box;
+}
 
 CaseConfig parse_case(const std::string& text, const std::string& file_name,
                       const std::vector<std::string>& overrides) {

@@ -8,6 +8,11 @@
 namespace sluice {
 
 BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies) {
+  energy_csv_ = std::make_unique<io::CsvWriter>(
+      out_dir + "/energy.csv",
+      std::vector<std::string>{"time", "body_kinetic", "body_potential", "contact_elastic",
+                               "fluid_kinetic", "fluid_potential", "fluid_elastic", "total",
+                               "fluid_mass", "solid_substeps"});
   if (bodies.empty()) return;
   std::error_code error;
   std::filesystem::create_directories(out_dir + "/bodies", error);
@@ -23,15 +28,10 @@ BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies) {
     body_csv_.push_back(std::make_unique<io::CsvWriter>(
         out_dir + "/bodies/" + bodies.config(b).name + ".csv", header));
   }
-  energy_csv_ = std::make_unique<io::CsvWriter>(
-      out_dir + "/energy.csv",
-      std::vector<std::string>{"time", "body_kinetic", "body_potential", "contact_elastic",
-                               "fluid_kinetic", "fluid_potential", "total", "solid_substeps"});
 }
 
 void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& coupler,
                         const FluidEnergy& fluid) {
-  if (!energy_csv_) return;
   const auto& system = bodies.system();
   for (std::size_t b = 0; b < bodies.count(); ++b) {
     const RigidBody& s = bodies.state(b);
@@ -48,8 +48,8 @@ void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& c
   }
   const RigidSystemEnergy e = system.energy();
   energy_csv_->row({time, e.kinetic, e.potential, e.elastic, fluid.kinetic, fluid.potential,
-                    e.total() + fluid.kinetic + fluid.potential,
-                    static_cast<double>(bodies.substeps())});
+                    fluid.elastic, e.total() + fluid.kinetic + fluid.potential + fluid.elastic,
+                    fluid.mass, static_cast<double>(bodies.substeps())});
 }
 
 }  // namespace sluice

@@ -70,7 +70,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   };
   double next_output = next_multiple(0, config.output_interval);
   double next_probe = probes.empty() ? end_time : next_multiple(0, config.probe_interval);
-  double next_body = sim.bodies().empty() ? end_time : next_multiple(0, config.body_interval);
+  double next_body = next_multiple(0, config.body_interval);
   while (sim.time() < end_time * (1 - 1e-12)) {
     const double until = std::min({next_output, next_probe, next_body, end_time});
     sim.step(until);
@@ -93,7 +93,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
         probes.record(t, fluid);
         next_probe = next_multiple(t, config.probe_interval);
       }
-      if (!sim.bodies().empty() && (t >= next_body * (1 - 1e-12) || at_end)) {
+      if (t >= next_body * (1 - 1e-12) || at_end) {
         body_output.record(t, sim.bodies(), sim.coupler(), fluid.energy());
         next_body = next_multiple(t, config.body_interval);
       }

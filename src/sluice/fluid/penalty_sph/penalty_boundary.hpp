@@ -31,9 +31,10 @@ struct PenaltyLaw {
 
 template <int D>
 struct PenaltyContact {
-  Vec<D> force = Vec<D>::Zero();  // f_np [N]
-  Real depth = 0;                 // d [m]; 0 when not in contact
-  bool crossed = false;           // the particle passed the solid particle's centre this step
+  Vec<D> force = Vec<D>::Zero();   // f_np [N]
+  Vec<D> normal = Vec<D>::Zero();  // n, from the solid particle towards the fluid one
+  Real depth = 0;                  // d [m]; 0 when not in contact
+  bool crossed = false;            // the particle passed the solid particle's centre this step
 };
 
 // f_np on a fluid particle now at x, at x_previous at the start of the step, moving at v, from
@@ -63,6 +64,7 @@ PenaltyContact<D> penalty_contact(const PenaltyLaw& law, const Vec<D>& x, const 
   }
   c.depth = reach - offset.dot(normal);
   if (c.depth <= 0) return {};
+  c.normal = normal;
   const Real magnitude = law.stiffness * c.depth - law.damping * (v - vb).dot(normal);
   c.force = std::max<Real>(magnitude, 0) * normal;
   return c;

@@ -1,0 +1,17 @@
+// Builds the penalty-sph model from a case (registered as "penalty-sph" in
+// fluid/model_registry.cpp).
+#pragma once
+
+#include <memory>
+
+#include "sluice/coupling/body_geometry.hpp"
+#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/io/case_config.hpp"
+
+namespace sluice {
+
+template <int D>
+std::unique_ptr<FluidSystem> make_penalty_sph(const io::CaseConfig& config,
+                                              const BodyGeometry& bodies);
+
+}  // namespace sluice

@@ -1,0 +1,364 @@
+// Müller-style SPH with penalty boundaries (seed 002; Müller, Charypar & Gross 2003): density
+// by summation with the poly6 kernel, pressure p = k (rho - rho0), the symmetric pressure force
+// with the spiky kernel's gradient, viscosity through the viscosity kernel's Laplacian, gravity,
+// buoyancy b (rho - rho0) g and surface tension from the colour field. The walls, the bodies
+// and the case's solid layers (`model.solids`, each on a lattice of its own spacing L_b) are
+// solid particles that push the fluid out with the penalty law of penalty_boundary.hpp and
+// drag it with the no-slip traction; a fluid particle meets them in sub-steps of its own with
+// its fluid force held (solid_contact_stepper.hpp). Kick-drift-kick leap-frog around that.
+// Fluid forces are densities (N/m^3), as in Müller et al.; the boundary force is a force (N).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "sluice/core/errors.hpp"
+#include "sluice/exec/policy.hpp"
+#include "sluice/fluid/particle_fluid.hpp"
+#include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
+#include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
+#include "sluice/geometry/sampling.hpp"
+
+namespace sluice {
+
+template <int D>
+class PenaltySphModel final : public ParticleFluid<D> {
+ public:
+  PenaltySphModel(const PenaltySphParameters& parameters, const io::CaseConfig& config,
+                  const BodyGeometry& bodies)
+      : ParticleFluid<D>(config, parameters.smoothing_length(config.spacing, D), bodies),
+        p_(parameters),
+        config_(config),
+        kernels_(parameters.smoothing_length(config.spacing, D)),
+        rest_density_(config.fluid.density),
+        viscosity_(config.fluid.density * config.fluid.kinematic_viscosity),
+        particle_mass_(config.fluid.density * std::pow(config.spacing, D)) {
+    settings_.law.stiffness = p_.stiffness > 0 ? p_.stiffness : suggested_stiffness();
+    // Without a given Kd, critical damping of one contact: water does not bounce off a wall.
+    settings_.law.damping =
+        p_.damping > 0 ? p_.damping : 2 * std::sqrt(settings_.law.stiffness * particle_mass_);
+    settings_.wall_friction = p_.wall_friction;
+    settings_.kernels = kernels_;
+  }
+
+  // The energy rule: a particle arriving at the largest expected speed is stopped by one
+  // solid particle of its own spacing within a quarter spacing, 1/2 Ks d^2 = 1/2 m v^2.
+  Real suggested_stiffness() const {
+    return particle_mass_ * std::pow(p_.max_speed / (0.25 * config_.spacing), 2);
+  }
+
+  std::string describe() const override {
+    return fmt::format(
+        "penalty-sph: h = {:.4g} m ({} particles in the support), k = {:.4g} m^2/s^2, b = {}, "
+        "sigma = {} N/m, Ks = {:.4g} N/m, Kd = {:.4g} N s/m, wall friction {:.4g} Pa s, {} solid "
+        "layer(s){}",
+        kernels_.h, p_.kernel_particles, p_.gas_stiffness, p_.buoyancy, p_.surface_tension,
+        settings_.law.stiffness, settings_.law.damping, p_.wall_friction, p_.solids.size(),
+        p_.time_step > 0 ? fmt::format(", fixed dt = {} s", p_.time_step) : std::string());
+  }
+
+  void initialize() override {
+    auto& ps = this->state().particles;
+    acceleration_ = ps.add_vector_field({"acceleration", "m/s^2"});
+    half_velocity_ = ps.add_vector_field({"half_step_velocity", "m/s"});
+    boundary_force_ = ps.add_vector_field({"boundary_force", "N", true});
+    solid_spacing_ = ps.add_scalar_field({"solid_spacing", "m", true});
+    layers_above_ = ps.add_int_field({"layers_above", "1"});
+    passed_ = ps.add_int_field({"passed_solid", "1", true});
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!ps.is_fluid(i)) ps[solid_spacing_][i] = config_.spacing;
+    }
+    add_solid_layers();
+    has_bodies_ = this->body_points().size() > 0;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!ps.is_fluid(i)) continue;
+      const Real up = ps.position[i][kUpAxis<D>];
+      for (std::size_t k = 0; k < p_.solids.size(); ++k) {
+        if (up > p_.solids[k].box.max[2]) ps[layers_above_][i] |= 1 << k;
+      }
+      if (ps[layers_above_][i] != 0) ++above_count_;
+    }
+    compute_density();
+    compute_forces();
+    measure_extremes();
+  }
+
+  double next_time_step() const override {
+    if (p_.time_step > 0) return p_.time_step;
+    const Real h = kernels_.h;
+    const Real c0 = std::sqrt(p_.gas_stiffness);
+    double dt = p_.cfl * h / (c0 + max_speed_);
+    if (max_acceleration_ > 0) dt = std::min(dt, p_.cfl * std::sqrt(h / max_acceleration_));
+    const Real nu = viscosity_ / rest_density_;
+    if (nu > 0) dt = std::min(dt, 0.125 * h * h / nu);
+    // Capillary waves (Brackbill, Kothe & Zemach 1992): dt < sqrt(rho h^3 / (2 pi sigma)).
+    if (p_.surface_tension > 0) {
+      dt = std::min(
+          dt, std::sqrt(rest_density_ * h * h * h / (2 * std::numbers::pi * p_.surface_tension)));
+    }
+    return dt;
+  }
+
+  std::vector<std::pair<std::string, double>> counters() const override {
+    const double particle_steps = static_cast<double>(fluid_steps_);
+    std::vector<std::pair<std::string, double>> out = {
+        {"boundary_contacts_per_step", steps_ > 0 ? double(contacts_) / double(steps_) : 0},
+        {"mean_boundary_force", contacts_ > 0 ? force_sum_ / double(contacts_) : 0},
+        {"boundary_crossings", static_cast<double>(crossings_)},
+        {"contact_substeps_per_particle_step",
+         particle_steps > 0 ? double(substeps_) / particle_steps : 0}};
+    if (above_count_ > 0) {
+      long passed = 0;
+      const auto& ps = this->state().particles;
+      for (std::size_t i = 0; i < ps.size(); ++i) passed += ps[passed_][i];
+      out.emplace_back("held_back_fraction",
+                       1.0 - static_cast<double>(passed) / static_cast<double>(above_count_));
+    }
+    return out;
+  }
+
+  FluidEnergy energy() const override {
+    FluidEnergy e = ParticleFluid<D>::energy();
+    e.elastic = elastic_energy();
+    return e;
+  }
+
+  const PenaltyLaw& law() const { return settings_.law; }
+  FieldHandle<Vec<D>> boundary_force_field() const { return boundary_force_; }
+
+ protected:
+  void model_stages(StageList& before, StageList& after) override {
+    before.push_back(make_stage<const StepClock>("kick_drift",
+                                                 [this](const StepClock& c) { kick_drift(c.dt); }));
+    after.push_back(
+        make_stage<const StepClock>("density", [this](const StepClock&) { compute_density(); }));
+    after.push_back(
+        make_stage<const StepClock>("forces", [this](const StepClock&) { compute_forces(); }));
+    after.push_back(make_stage<const StepClock>("kick", [this](const StepClock& c) {
+      kick(c.dt);
+      measure_extremes();
+    }));
+  }
+
+  // The reaction on each body particle of its penalty force and no-slip traction on the fluid,
+  // evaluated at the end of the step (the fluid's sub-steps are not split among the solids).
+  void body_point_forces(const std::vector<BodyKinematics>&,
+                         std::vector<Vec3>& force) const override {
+    const ParticleState<D>& s = this->state();
+    const auto& ps = s.particles;
+    for (std::size_t b = 0; b < ps.size(); ++b) {
+      const std::int32_t k = ps.body_point[b];
+      if (k < 0) continue;
+      const Real reach = (ps[solid_spacing_][b] + config_.spacing) / 2;
+      Vec<D> sum = Vec<D>::Zero();
+      s.cells.for_each_neighbor(
+          ps.position, b, kernels_.h2, [&](std::size_t i, const Vec<D>&, Real) {
+            if (!ps.is_fluid(i)) return;
+            sum -= penalty_contact<D>(settings_.law, ps.position[i], ps.position[i], ps.velocity[i],
+                                      ps.position[b], ps.velocity[b], reach)
+                       .force;
+          });
+      force[static_cast<std::size_t>(k)] += to_3d<D>(sum);
+    }
+  }
+
+ private:
+  // The case's solid layers as wall particles of their own spacing; a fluid block that
+  // overlaps one is an input error.
+  void add_solid_layers() {
+    if (p_.solids.empty()) return;
+    ParticleState<D>& s = this->state();
+    auto& ps = s.particles;
+    for (const SolidLayerConfig& layer : p_.solids) {
+      const Real spacing = layer.spacing_ratio * config_.spacing;
+      AxisBox inside = layer.box;
+      for (int a = 0; a < 3; ++a) {
+        inside.min[a] = std::max(inside.min[a], config_.domain.min[a]);
+        inside.max[a] = std::min(inside.max[a], config_.domain.max[a]);
+      }
+      const std::vector<Vec<D>> points = sample_box_volume<D>(inside, spacing);
+      if (points.empty()) {
+        throw InputError(config_.file(), layer.line, layer.key + ".spacing_ratio",
+                         fmt::format("the layer holds no solid particle inside the domain at "
+                                     "L_b = {} x {} m; make the box larger than L_b",
+                                     layer.spacing_ratio, config_.spacing));
+      }
+      for (const auto& block : config_.fluid.blocks) {
+        if (block.box.overlaps(layer.box, 0)) {
+          throw InputError(
+              config_.file(), layer.line, layer.key,
+              fmt::format("the solid layer overlaps the fluid block '{}'", block.name));
+        }
+      }
+      const Real mass = layer.density * std::pow(spacing, D);
+      for (const Vec<D>& x : points) {
+        ps.add(x, Vec<D>::Zero(), layer.density, mass, ParticleKind::kWall);
+        ps[solid_spacing_].back() = spacing;
+      }
+    }
+    Vec<D> lo = ps.position.front(), hi = lo;
+    for (const Vec<D>& x : ps.position) {
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    s.cells = CellList<D>(lo, hi, this->interaction_radius());
+    std::vector<std::uint32_t> order;
+    s.cells.sort(ps.position, order);
+    ps.reorder(order);
+  }
+
+  // Half kick with the held fluid force, then the drift through the solids (which may stop
+  // the particle), then the end-of-step velocity predicted for the viscosity.
+  void kick_drift(Real dt) {
+    auto& ps = this->state().particles;
+    const auto& a = ps[acceleration_];
+    auto& boundary = ps[boundary_force_];
+    auto& half = ps[half_velocity_];
+    // Walls and solid layers stand still: gathered once, again every step only with bodies.
+    if (has_bodies_ || steps_ == 0) {
+      solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
+    }
+    step_results_.assign(ps.size(), {});
+    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
+      boundary[i] = Vec<D>::Zero();
+      if (!ps.is_fluid(i)) return;
+      thread_local std::vector<std::uint32_t> candidates;
+      // The fluid force's half kick is in v already, so the stepper holds none: the drift
+      // is x += dt v_half unless a solid acts.
+      Vec<D>& v = half[i];
+      v = ps.velocity[i] + 0.5 * dt * a[i];
+      step_results_[i] =
+          advance_against_solids<D>(settings_, solids_, ps.position[i], v, ps.mass[i],
+                                    ps.density[i], Vec<D>::Zero(), dt, candidates);
+      boundary[i] = step_results_[i].impulse / dt;
+      ps.velocity[i] = v + 0.5 * dt * a[i];
+    });
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!ps.is_fluid(i)) continue;
+      const SolidStepResult<D>& r = step_results_[i];
+      ++fluid_steps_;
+      substeps_ += r.substeps;
+      if (r.touched) {
+        ++contacts_;
+        force_sum_ += boundary[i].norm();
+      }
+      crossings_ += r.crossed;
+      for (std::size_t k = 0; k < p_.solids.size(); ++k) {
+        const bool started_above = ps[layers_above_][i] & (1 << k);
+        if (started_above && ps.position[i][kUpAxis<D>] < p_.solids[k].box.min[2]) {
+          ps[passed_][i] = 1;
+        }
+      }
+    }
+    ++steps_;
+  }
+
+  void kick(Real dt) {
+    auto& ps = this->state().particles;
+    const auto& a = ps[acceleration_];
+    const auto& half = ps[half_velocity_];
+    exec::Default::for_each(ps.size(), [&](std::size_t i) {
+      if (ps.is_fluid(i)) ps.velocity[i] = half[i] + 0.5 * dt * a[i];
+    });
+  }
+
+  // rho_i = sum over the fluid (i included) of m_j W_poly6; p_i = k (rho_i - rho0), by default
+  // not below zero: a particle at the free surface or a wall misses part of its neighbours,
+  // and the tension of its density deficit would clump the surface.
+  void compute_density() {
+    ParticleState<D>& s = this->state();
+    auto& ps = s.particles;
+    const auto& spacing = ps[solid_spacing_];
+    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
+      if (!ps.is_fluid(i)) return;
+      Real rho = ps.mass[i] * kernels_.poly6(0);
+      s.cells.for_each_neighbor(
+          ps.position, i, kernels_.h2, [&](std::size_t j, const Vec<D>&, Real r2) {
+            // A solid particle counts as the fluid it displaces, rho0 L_b^D, so that the
+            // density next to a wall is whole and its pressure holds the water above.
+            const Real m = ps.is_fluid(j) ? ps.mass[j] : rest_density_ * std::pow(spacing[j], D);
+            rho += m * kernels_.poly6(std::sqrt(r2));
+          });
+      ps.density[i] = rho;
+      const Real pressure = p_.gas_stiffness * (rho - rest_density_);
+      ps.pressure[i] = p_.keep_negative_pressure ? pressure : std::max<Real>(pressure, 0);
+    });
+  }
+
+  // The fluid's own force per unit mass, gravity and buoyancy included; the solids act in
+  // the drift.
+  void compute_forces() {
+    ParticleState<D>& s = this->state();
+    auto& ps = s.particles;
+    auto& a = ps[acceleration_];
+    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
+      if (!ps.is_fluid(i)) return;
+      const Real rho_i = ps.density[i];
+      Vec<D> pressure = Vec<D>::Zero(), viscous = Vec<D>::Zero(), normal = Vec<D>::Zero();
+      Real curvature = ps.mass[i] / rho_i * kernels_.poly6_laplacian(0);
+      s.cells.for_each_neighbor(
+          ps.position, i, kernels_.h2, [&](std::size_t j, const Vec<D>& rij, Real r2) {
+            if (!ps.is_fluid(j)) return;
+            const Real r = std::sqrt(r2);
+            const Real volume = ps.mass[j] / ps.density[j];
+            pressure -= volume * 0.5 * (ps.pressure[i] + ps.pressure[j]) *
+                        kernels_.spiky_gradient_factor(r) * rij;
+            viscous += volume * kernels_.viscosity_laplacian(r) * (ps.velocity[j] - ps.velocity[i]);
+            normal += volume * kernels_.poly6_gradient_factor(r) * rij;
+            curvature += volume * kernels_.poly6_laplacian(r);
+          });
+      Vec<D> f = pressure + viscosity_ * viscous +
+                 (rho_i + p_.buoyancy * (rho_i - rest_density_)) * s.gravity;
+      const Real n = normal.norm();
+      if (p_.surface_tension > 0 && n > p_.surface_threshold) {
+        f -= p_.surface_tension * curvature * normal / n;
+      }
+      a[i] = f / rho_i;
+    });
+  }
+
+  // 1/2 Ks d^2 over the fluid-solid pairs in contact now.
+  double elastic_energy() const {
+    const auto& ps = this->state().particles;
+    double sum = 0;
+    std::vector<std::uint32_t> near;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!ps.is_fluid(i)) continue;
+      solids_.near(ps.position[i], near);
+      for (const std::uint32_t k : near) {
+        const Real d = solids_.reach[k] - (ps.position[i] - solids_.position[k]).norm();
+        if (d > 0) sum += 0.5 * settings_.law.stiffness * d * d;
+      }
+    }
+    return sum;
+  }
+
+  void measure_extremes() {
+    const auto& ps = this->state().particles;
+    const auto& a = ps[acceleration_];
+    max_speed_ = exec::Default::max_of(
+        ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? ps.velocity[i].norm() : 0.0; });
+    max_acceleration_ = exec::Default::max_of(
+        ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? a[i].norm() : 0.0; });
+  }
+
+  PenaltySphParameters p_;
+  io::CaseConfig config_;
+  MullerKernels<D> kernels_;
+  Real rest_density_, viscosity_, particle_mass_;
+  SolidContactSettings<D> settings_;
+  SolidParticles<D> solids_;
+  FieldHandle<Vec<D>> acceleration_, half_velocity_, boundary_force_;
+  FieldHandle<Real> solid_spacing_;
+  FieldHandle<std::int32_t> layers_above_, passed_;
+  std::vector<SolidStepResult<D>> step_results_;
+  bool has_bodies_ = false;
+  Real max_speed_ = 0, max_acceleration_ = 0;
+  long steps_ = 0, fluid_steps_ = 0, contacts_ = 0, crossings_ = 0, substeps_ = 0, above_count_ = 0;
+  double force_sum_ = 0;
+};
+
+}  // namespace sluice

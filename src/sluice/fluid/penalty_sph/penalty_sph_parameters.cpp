@@ -1,0 +1,65 @@
+#include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "sluice/fluid/free_fall_speed.hpp"
+
+namespace sluice {
+
+double PenaltySphParameters::smoothing_length(double spacing, int dimension) const {
+  const double pi = std::numbers::pi;
+  return dimension == 2 ? spacing * std::sqrt(kernel_particles / pi)
+                        : spacing * std::cbrt(3 * kernel_particles / (4 * pi));
+}
+
+PenaltySphParameters read_penalty_sph_parameters(const io::CaseConfig& config) {
+  io::MapReader model(config.source, config.model, "model", config.model_line);
+  model.required<std::string>("name");
+  PenaltySphParameters p;
+  p.kernel_particles = model.optional_positive("kernel_particles", p.kernel_particles);
+  if (p.kernel_particles < 5 || p.kernel_particles > 80) {
+    model.fail("kernel_particles", fmt::format("must lie in [5, 80], got {}", p.kernel_particles));
+  }
+  p.gas_stiffness = model.optional_positive("gas_stiffness", 0);
+  p.keep_negative_pressure =
+      model.optional_choice("negative_pressure", "clamp", "negative-pressure rule",
+                            {"clamp", "keep"}) == "keep";
+  p.speed_factor = model.optional_positive("speed_factor", p.speed_factor);
+  p.max_speed = model.optional_positive("max_speed", 0);
+  p.buoyancy = model.optional_non_negative("buoyancy", p.buoyancy);
+  p.surface_tension = model.optional_non_negative("surface_tension", p.surface_tension);
+  p.surface_threshold = model.optional_non_negative("surface_threshold", p.surface_threshold);
+  p.stiffness = model.optional_positive("Ks", 0);
+  p.damping = model.optional_positive("Kd", 0);
+  p.wall_friction = model.optional_non_negative("wall_friction", -1);
+  p.time_step = model.optional_positive("time_step", 0);
+  p.cfl = model.optional_positive("cfl", p.cfl);
+  if (p.cfl > 1) model.fail("cfl", fmt::format("must not exceed 1, got {}", p.cfl));
+  if (model.has("solids")) {
+    for (auto& layer : model.list_of_maps("solids")) {
+      SolidLayerConfig s;
+      s.key = layer.path();
+      s.line = layer.line();
+      s.box = io::read_box(layer, config.dimension);
+      s.spacing_ratio = layer.required_positive("spacing_ratio");
+      s.density = layer.optional_positive("density", s.density);
+      layer.finish();
+      p.solids.push_back(s);
+    }
+  }
+  model.finish();
+
+  if (p.max_speed == 0) p.max_speed = free_fall_speed(config);
+  if (!(p.max_speed > 0)) {
+    model.fail_here("cannot derive a speed scale without gravity: set model.max_speed");
+  }
+  if (p.gas_stiffness == 0) p.gas_stiffness = std::pow(p.speed_factor * p.max_speed, 2);
+  if (p.wall_friction < 0)
+    p.wall_friction = config.fluid.density * config.fluid.kinematic_viscosity;
+  return p;
+}
+
+}  // namespace sluice

@@ -1,0 +1,92 @@
+// One fluid particle of the penalty-sph model against a layer of solid particles
+// (fluid/penalty_sph/solid_contact_stepper.hpp): free flight is exact, a stiff layer stops a
+// falling particle and holds it at rest under gravity at any step, and a soft one lets it
+// through once its kinetic energy beats the penalty energy at the layer's weakest point.
+#include <gtest/gtest.h>
+
+#include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
+
+namespace sluice {
+namespace {
+
+constexpr Real kFluidSpacing = 0.0033;
+constexpr Real kMass = 998.29 * kFluidSpacing * kFluidSpacing * kFluidSpacing;
+constexpr Real kDensity = 998.29;
+
+// A square layer of solid particles L_b apart in the plane z = 0, 0.1 m wide.
+SolidParticles<3> layer(Real spacing) {
+  ParticleSet<3> particles;
+  std::vector<Real> solid_spacing;
+  const int n = static_cast<int>(0.1 / spacing);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      particles.add(Vec3((i + 0.5) * spacing, (j + 0.5) * spacing, 0), Vec3::Zero(), 2800, 1,
+                    ParticleKind::kWall);
+      solid_spacing.push_back(spacing);
+    }
+  }
+  SolidParticles<3> solids;
+  solids.gather(particles, solid_spacing, kFluidSpacing, 0.0055);
+  return solids;
+}
+
+SolidContactSettings<3> settings(Real stiffness) {
+  SolidContactSettings<3> s;
+  s.law = {stiffness, 2 * std::sqrt(stiffness * kMass)};
+  s.kernels = MullerKernels<3>(0.0055);
+  return s;
+}
+
+const Vec3 kGravity(0, 0, -9.81);
+
+TEST(SolidContactStepper, FreeFlightIsExact) {
+  const SolidParticles<3> solids = layer(0.002);
+  std::vector<std::uint32_t> scratch;
+  Vec3 x(0.05, 0.05, 0.3), v(0.1, 0, -1);
+  const auto r = advance_against_solids<3>(settings(5e4), solids, x, v, kMass, kDensity, kGravity,
+                                           0.01, scratch);
+  EXPECT_FALSE(r.touched);
+  EXPECT_EQ(r.impulse.norm(), 0);
+  EXPECT_NEAR((x - Vec3(0.051, 0.05, 0.3 - 0.01 - 0.5 * 9.81e-4)).norm(), 0, 1e-14);
+  EXPECT_NEAR((v - Vec3(0.1, 0, -1 - 0.0981)).norm(), 0, 1e-14);
+}
+
+// Drops a particle from 0.3 m above the layer at (x, y) and runs `steps` steps of 0.01 s.
+struct Drop {
+  Vec3 x, v;
+  bool crossed_plane = false;
+  Vec3 last_force = Vec3::Zero();
+};
+Drop drop(Real stiffness, Real solid_spacing, Real x0, Real y0, int steps) {
+  const SolidParticles<3> solids = layer(solid_spacing);
+  const SolidContactSettings<3> s = settings(stiffness);
+  std::vector<std::uint32_t> scratch;
+  Drop d{Vec3(x0, y0, 0.01), Vec3(0, 0, -std::sqrt(2 * 9.81 * 0.3))};
+  for (int k = 0; k < steps; ++k) {
+    const auto r =
+        advance_against_solids<3>(s, solids, d.x, d.v, kMass, kDensity, kGravity, 0.01, scratch);
+    d.crossed_plane = d.crossed_plane || d.x.z() < 0;
+    d.last_force = r.impulse / 0.01;
+  }
+  return d;
+}
+
+TEST(SolidContactStepper, AStiffLayerStopsAndHoldsAFallingParticle) {
+  // Ks = 5e4 N/m on 0.002 m solids: at rest the springs carry the weight m g.
+  for (const Real x0 : {0.051, 0.05, 0.0513}) {
+    const Drop d = drop(5e4, 0.002, x0, 0.05, 100);
+    EXPECT_FALSE(d.crossed_plane) << x0;
+    EXPECT_GT(d.x.z(), 0) << x0;
+    EXPECT_LT(d.v.norm(), 1e-3) << x0;
+    EXPECT_NEAR(d.last_force.z(), 9.81 * kMass, 1e-3 * 9.81 * kMass) << x0;
+  }
+}
+
+TEST(SolidContactStepper, ASoftLayerLetsTheParticleThrough) {
+  // Ks = 1e-3 N/m stores far less than the 1/2 m v^2 = 1.05e-4 J of the impact.
+  const Drop d = drop(1e-3, 0.002, 0.051, 0.05, 10);
+  EXPECT_TRUE(d.crossed_plane);
+}
+
+}  // namespace
+}  // namespace sluice
