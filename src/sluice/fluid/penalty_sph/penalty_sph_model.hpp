@@ -107,6 +107,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
     std::vector<std::pair<std::string, double>> out = {
         {"boundary_contacts_per_step", steps_ > 0 ? double(contacts_) / double(steps_) : 0},
         {"mean_boundary_force", contacts_ > 0 ? force_sum_ / double(contacts_) : 0},
+        {"peak_boundary_force", peak_force_},
         {"boundary_crossings", static_cast<double>(crossings_)},
         {"contact_substeps_per_particle_step",
          particle_steps > 0 ? double(substeps_) / particle_steps : 0}};
@@ -244,6 +245,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
       if (r.touched) {
         ++contacts_;
         force_sum_ += boundary[i].norm();
+        peak_force_ = std::max<double>(peak_force_, r.peak_force);
       }
       crossings_ += r.crossed;
       for (std::size_t k = 0; k < p_.solids.size(); ++k) {
@@ -358,7 +360,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
   bool has_bodies_ = false;
   Real max_speed_ = 0, max_acceleration_ = 0;
   long steps_ = 0, fluid_steps_ = 0, contacts_ = 0, crossings_ = 0, substeps_ = 0, above_count_ = 0;
-  double force_sum_ = 0;
+  double force_sum_ = 0, peak_force_ = 0;
 };
 
 }  // namespace sluice

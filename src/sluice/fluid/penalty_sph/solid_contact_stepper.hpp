@@ -46,6 +46,7 @@ struct SolidContactSettings {
 template <int D>
 struct SolidStepResult {
   Vec<D> impulse = Vec<D>::Zero();  // of the boundary force f_np + f_ns over the step [N s]
+  Real peak_force = 0;              // the largest boundary force of a sub-step [N]
   int substeps = 0;
   bool touched = false;  // in penalty contact at some sub-step
   bool crossed = false;  // went past a solid particle's centre within a sub-step
@@ -93,6 +94,8 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     // The forces at x and their derivatives; `active` marks the solids pressing now.
     Vec<D> force = m * acceleration;
     Mat stiffness = Mat::Zero(), damping = Mat::Zero();
+    Vec<D> spring_force = Vec<D>::Zero();
+    bool pressing = false;
     Real nearest_reach = support;
     active.assign(candidates.size(), 0);
     for (std::size_t c = 0; c < candidates.size(); ++c) {
@@ -118,6 +121,8 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       // sub-step and be thrown out by the depth it reached.
       const Mat nn = p.normal * p.normal.transpose();
       stiffness += settings.law.stiffness * nn;
+      pressing = true;
+      spring_force += settings.law.stiffness * p.depth * p.normal;
       if (p.force.squaredNorm() == 0) continue;
       force += p.force;
       damping += settings.law.damping * nn;
@@ -126,6 +131,11 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     // resting on the springs (f ~ 0, v ~ 0) takes the rest of the step at once...
     Real tau = std::min(remaining,
                         time_to_move(settings.travel * nearest_reach, v.norm(), force.norm() / m));
+    // A particle pressing on the springs faster than it would creep at rest (the speed
+    // |Ks d| / (m omega) of its springs' load) is in an impact: resolved in fifths of 1/omega.
+    if (pressing && v.norm() > 10 * spring_force.norm() / (m * omega)) {
+      tau = std::min(tau, shortest);
+    }
     const Mat inertia_of_v = m * Mat::Identity();
     Vec<D> v_new;
     for (;;) {
@@ -146,7 +156,9 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       if (!late) break;
       tau = std::max(shortest, tau / 4);
     }
-    out.impulse += m * (v_new - v) - tau * m * acceleration;
+    const Vec<D> impulse = m * (v_new - v) - tau * m * acceleration;
+    out.impulse += impulse;
+    out.peak_force = std::max(out.peak_force, impulse.norm() / tau);
     previous = x;
     x += tau * v_new;
     v = v_new;
