@@ -20,6 +20,7 @@
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
+#include "sluice/fluid/penalty_sph/stiffness_suggestion.hpp"
 #include "sluice/geometry/sampling.hpp"
 
 namespace sluice {
@@ -52,12 +53,41 @@ class PenaltySphModel final : public ParticleFluid<D> {
 
   std::string describe() const override {
     return fmt::format(
-        "penalty-sph: h = {:.4g} m ({} particles in the support), k = {:.4g} m^2/s^2, b = {}, "
-        "sigma = {} N/m, Ks = {:.4g} N/m, Kd = {:.4g} N s/m, wall friction {:.4g} Pa s, {} solid "
-        "layer(s){}",
-        kernels_.h, p_.kernel_particles, p_.gas_stiffness, p_.buoyancy, p_.surface_tension,
-        settings_.law.stiffness, settings_.law.damping, p_.wall_friction, p_.solids.size(),
-        p_.time_step > 0 ? fmt::format(", fixed dt = {} s", p_.time_step) : std::string());
+               "penalty-sph: h = {:.4g} m ({} particles in the support), k = {:.4g} m^2/s^2, b = "
+               "{}, "
+               "sigma = {} N/m, Ks = {:.4g} N/m, Kd = {:.4g} N s/m, wall friction {:.4g} Pa s, {} "
+               "solid "
+               "layer(s){}",
+               kernels_.h, p_.kernel_particles, p_.gas_stiffness, p_.buoyancy, p_.surface_tension,
+               settings_.law.stiffness, settings_.law.damping, p_.wall_friction, p_.solids.size(),
+               p_.time_step > 0 ? fmt::format(", fixed dt = {} s", p_.time_step) : std::string()) +
+           stiffness_suggestions();
+  }
+
+  // Per solid layer, the smallest Ks that holds back the fastest expected impact: a fluid
+  // block falling from its top onto the layer's top, at its initial speed or from rest.
+  std::string stiffness_suggestions() const {
+    std::string out;
+    const double g = config_.gravity.norm();
+    for (const SolidLayerConfig& layer : p_.solids) {
+      double speed = 0;
+      for (const auto& block : config_.fluid.blocks) {
+        const double drop = std::max(0.0, block.box.max[2] - layer.box.max[2]);
+        speed = std::max(speed, std::sqrt(block.velocity.squaredNorm() + 2 * g * drop));
+      }
+      const Real spacing = layer.spacing_ratio * config_.spacing;
+      const Real ks = suggested_penalty_stiffness(
+          penalty_barrier<D>(spacing, (spacing + config_.spacing) / 2), particle_mass_, speed);
+      out += std::isinf(ks) ? fmt::format(
+                                  "\n  {}: no Ks holds the fluid back: the gaps between the solid "
+                                  "particles are wider than the reach (L_b + l0)/2",
+                                  layer.key)
+                            : fmt::format(
+                                  "\n  {}: Ks >= {:.3g} N/m holds the fluid back (the springs' "
+                                  "energy at the centre of a gap beats m v^2/2 at v = {:.3g} m/s)",
+                                  layer.key, ks, speed);
+    }
+    return out;
   }
 
   void initialize() override {
