@@ -95,7 +95,7 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     Vec<D> force = m * acceleration;
     Mat stiffness = Mat::Zero(), damping = Mat::Zero();
     Vec<D> spring_force = Vec<D>::Zero();
-    bool pressing = false;
+    Real approach = 0;  // the fastest approach along a contact's normal
     Real nearest_reach = support;
     active.assign(candidates.size(), 0);
     for (std::size_t c = 0; c < candidates.size(); ++c) {
@@ -109,9 +109,14 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
         force -= drag * (v - solids.velocity[k]);
         damping.diagonal().array() += drag;
       }
+      nearest_reach = std::min(nearest_reach, solids.reach[k]);
+      // Out of reach and still on the side it came from: no contact (most candidates).
+      if (r2 >= solids.reach[k] * solids.reach[k] &&
+          rel.dot(previous - solids.position[k]) >= 0) {
+        continue;
+      }
       const PenaltyContact<D> p = penalty_contact<D>(
           settings.law, x, previous, v, solids.position[k], solids.velocity[k], solids.reach[k]);
-      nearest_reach = std::min(nearest_reach, solids.reach[k]);
       if (p.depth <= 0) continue;
       active[c] = 1;
       out.touched = true;
@@ -121,7 +126,7 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       // sub-step and be thrown out by the depth it reached.
       const Mat nn = p.normal * p.normal.transpose();
       stiffness += settings.law.stiffness * nn;
-      pressing = true;
+      approach = std::max(approach, -(v - solids.velocity[k]).dot(p.normal));
       spring_force += settings.law.stiffness * p.depth * p.normal;
       if (p.force.squaredNorm() == 0) continue;
       force += p.force;
@@ -131,11 +136,10 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     // resting on the springs (f ~ 0, v ~ 0) takes the rest of the step at once...
     Real tau = std::min(remaining,
                         time_to_move(settings.travel * nearest_reach, v.norm(), force.norm() / m));
-    // A particle pressing on the springs faster than it would creep at rest (the speed
+    // A particle pressing into the springs faster than it would creep at rest (the speed
     // |Ks d| / (m omega) of its springs' load) is in an impact: resolved in fifths of 1/omega.
-    if (pressing && v.norm() > 10 * spring_force.norm() / (m * omega)) {
-      tau = std::min(tau, shortest);
-    }
+    // Sliding along the solid is not.
+    if (approach > 10 * spring_force.norm() / (m * omega)) tau = std::min(tau, shortest);
     const Mat inertia_of_v = m * Mat::Identity();
     Vec<D> v_new;
     for (;;) {
@@ -151,7 +155,8 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       for (std::size_t c = 0; c < candidates.size() && !late; ++c) {
         const std::uint32_t k = candidates[c];
         if (active[c]) continue;
-        late = solids.reach[k] - (x_new - solids.position[k]).norm() > allowed;
+        const Real inside = solids.reach[k] - allowed;  // closer than this: pressing too deep
+        late = inside > 0 && (x_new - solids.position[k]).squaredNorm() < inside * inside;
       }
       if (!late) break;
       tau = std::max(shortest, tau / 4);
