@@ -1,6 +1,7 @@
 // Müller-style SPH with penalty boundaries (seed 002; Müller, Charypar & Gross 2003): density
 // by summation with the poly6 kernel, pressure p = k (rho - rho0), the symmetric pressure force
-// with the spiky kernel's gradient, viscosity through the viscosity kernel's Laplacian, gravity,
+// with the spiky kernel's gradient (consistent, or Müller et al.'s half), Monaghan's artificial
+// viscosity (Monaghan 1992), viscosity through the viscosity kernel's Laplacian, gravity,
 // buoyancy b (rho - rho0) g and surface tension from the colour field. The walls, the bodies
 // and the case's solid layers (`model.solids`, each on a lattice of its own spacing L_b) are
 // solid particles that push the fluid out with the penalty law of penalty_boundary.hpp and
@@ -36,7 +37,11 @@ class PenaltySphModel final : public ParticleFluid<D> {
         kernels_(parameters.smoothing_length(config.spacing, D)),
         rest_density_(config.fluid.density),
         viscosity_(config.fluid.density * config.fluid.kinematic_viscosity),
-        particle_mass_(config.fluid.density * std::pow(config.spacing, D)) {
+        particle_mass_(config.fluid.density * std::pow(config.spacing, D)),
+        lattice_correction_(lattice_correction(config.spacing)),
+        pressure_weight_(parameters.muller_pressure_force ? 0.5 : 1.0),
+        damping_(parameters.artificial_viscosity * std::sqrt(parameters.gas_stiffness) *
+                 parameters.smoothing_length(config.spacing, D)) {
     settings_.law.stiffness = p_.stiffness > 0 ? p_.stiffness : suggested_stiffness();
     // Without a given Kd, critical damping of one contact: water does not bounce off a wall.
     settings_.law.damping =
@@ -45,49 +50,18 @@ class PenaltySphModel final : public ParticleFluid<D> {
     settings_.kernels = kernels_;
   }
 
-  // The energy rule: a particle arriving at the largest expected speed is stopped by one
-  // solid particle of its own spacing within a quarter spacing, 1/2 Ks d^2 = 1/2 m v^2.
-  Real suggested_stiffness() const {
-    return particle_mass_ * std::pow(p_.max_speed / (0.25 * config_.spacing), 2);
-  }
-
   std::string describe() const override {
-    return fmt::format(
-               "penalty-sph: h = {:.4g} m ({} particles in the support), k = {:.4g} m^2/s^2, b = "
-               "{}, "
-               "sigma = {} N/m, Ks = {:.4g} N/m, Kd = {:.4g} N s/m, wall friction {:.4g} Pa s, {} "
-               "solid "
-               "layer(s){}",
-               kernels_.h, p_.kernel_particles, p_.gas_stiffness, p_.buoyancy, p_.surface_tension,
-               settings_.law.stiffness, settings_.law.damping, p_.wall_friction, p_.solids.size(),
-               p_.time_step > 0 ? fmt::format(", fixed dt = {} s", p_.time_step) : std::string()) +
-           stiffness_suggestions();
-  }
-
-  // Per solid layer, the smallest Ks that holds back the fastest expected impact: a fluid
-  // block falling from its top onto the layer's top, at its initial speed or from rest.
-  std::string stiffness_suggestions() const {
-    std::string out;
-    const double g = config_.gravity.norm();
-    for (const SolidLayerConfig& layer : p_.solids) {
-      double speed = 0;
-      for (const auto& block : config_.fluid.blocks) {
-        const double drop = std::max(0.0, block.box.max[2] - layer.box.max[2]);
-        speed = std::max(speed, std::sqrt(block.velocity.squaredNorm() + 2 * g * drop));
-      }
-      const Real spacing = layer.spacing_ratio * config_.spacing;
-      const Real ks = suggested_penalty_stiffness(
-          penalty_barrier<D>(spacing, (spacing + config_.spacing) / 2), particle_mass_, speed);
-      out += std::isinf(ks) ? fmt::format(
-                                  "\n  {}: no Ks holds the fluid back: the gaps between the solid "
-                                  "particles are wider than the reach (L_b + l0)/2",
-                                  layer.key)
-                            : fmt::format(
-                                  "\n  {}: Ks >= {:.3g} N/m holds the fluid back (the springs' "
-                                  "energy at the centre of a gap beats m v^2/2 at v = {:.3g} m/s)",
-                                  layer.key, ks, speed);
-    }
-    return out;
+    std::string out = fmt::format(
+        "penalty-sph: h = {:.4g} m ({} particles in the support), k = {:.4g} m^2/s^2 ({} pressure "
+        "force), artificial viscosity {}, b = {}, sigma = {} N/m",
+        kernels_.h, p_.kernel_particles, p_.gas_stiffness,
+        p_.muller_pressure_force ? "Mueller's half" : "consistent", p_.artificial_viscosity,
+        p_.buoyancy, p_.surface_tension);
+    out += fmt::format(", Ks = {:.4g} N/m, Kd = {:.4g} N s/m, wall friction {:.4g} Pa s",
+                       settings_.law.stiffness, settings_.law.damping, p_.wall_friction);
+    out += fmt::format(", {} solid layer(s)", p_.solids.size());
+    if (p_.time_step > 0) out += fmt::format(", fixed dt = {} s", p_.time_step);
+    return out + stiffness_suggestions();
   }
 
   void initialize() override {
@@ -197,6 +171,52 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
  private:
+  // rho0 over the poly6 sum of a full lattice at the spacing.
+  Real lattice_correction(Real dx) const {
+    const int n = static_cast<int>(std::ceil(kernels_.h / dx));
+    Real sum = 0;
+    for (int a = -n; a <= n; ++a) {
+      for (int b = -n; b <= n; ++b) {
+        for (int c = (D == 3 ? -n : 0); c <= (D == 3 ? n : 0); ++c) {
+          sum += kernels_.poly6(dx * std::sqrt(Real(a * a + b * b + c * c)));
+        }
+      }
+    }
+    return rest_density_ / (particle_mass_ * sum);
+  }
+
+  // The energy rule: a particle arriving at the largest expected speed is stopped by one
+  // solid particle of its own spacing within a quarter spacing, 1/2 Ks d^2 = 1/2 m v^2.
+  Real suggested_stiffness() const {
+    return particle_mass_ * std::pow(p_.max_speed / (0.25 * config_.spacing), 2);
+  }
+
+  // Per solid layer, the smallest Ks that holds back the fastest expected impact: a fluid
+  // block falling from its top onto the layer's top, at its initial speed or from rest.
+  std::string stiffness_suggestions() const {
+    std::string out;
+    const double g = config_.gravity.norm();
+    for (const SolidLayerConfig& layer : p_.solids) {
+      double speed = 0;
+      for (const auto& block : config_.fluid.blocks) {
+        const double drop = std::max(0.0, block.box.max[2] - layer.box.max[2]);
+        speed = std::max(speed, std::sqrt(block.velocity.squaredNorm() + 2 * g * drop));
+      }
+      const Real spacing = layer.spacing_ratio * config_.spacing;
+      const Real ks = suggested_penalty_stiffness(
+          penalty_barrier<D>(spacing, (spacing + config_.spacing) / 2), particle_mass_, speed);
+      out += std::isinf(ks) ? fmt::format(
+                                  "\n  {}: no Ks holds the fluid back: the gaps between the solid "
+                                  "particles are wider than the reach (L_b + l0)/2",
+                                  layer.key)
+                            : fmt::format(
+                                  "\n  {}: Ks >= {:.3g} N/m holds the fluid back (the springs' "
+                                  "energy at the centre of a gap beats m v^2/2 at v = {:.3g} m/s)",
+                                  layer.key, ks, speed);
+    }
+    return out;
+  }
+
   // The case's solid layers as wall particles of their own spacing; a fluid block that
   // overlaps one is an input error.
   void add_solid_layers() {
@@ -314,7 +334,8 @@ class PenaltySphModel final : public ParticleFluid<D> {
             const Real m = ps.is_fluid(j) ? ps.mass[j] : rest_density_ * std::pow(spacing[j], D);
             rho += m * kernels_.poly6(std::sqrt(r2));
           });
-      ps.density[i] = rho;
+      ps.density[i] = lattice_correction_ * rho;
+      rho = ps.density[i];
       const Real pressure = p_.gas_stiffness * (rho - rest_density_);
       ps.pressure[i] = p_.keep_negative_pressure ? pressure : std::max<Real>(pressure, 0);
     });
@@ -326,6 +347,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
     ParticleState<D>& s = this->state();
     auto& ps = s.particles;
     auto& a = ps[acceleration_];
+    const auto& spacing = ps[solid_spacing_];
     exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;
       const Real rho_i = ps.density[i];
@@ -333,12 +355,27 @@ class PenaltySphModel final : public ParticleFluid<D> {
       Real curvature = ps.mass[i] / rho_i * kernels_.poly6_laplacian(0);
       s.cells.for_each_neighbor(
           ps.position, i, kernels_.h2, [&](std::size_t j, const Vec<D>& rij, Real r2) {
-            if (!ps.is_fluid(j)) return;
             const Real r = std::sqrt(r2);
+            if (!ps.is_fluid(j)) {
+              // A solid particle holds the fluid's own pressure (a zero normal gradient), so
+              // that the water's weight rests on the pressure at a wall as inside, not on
+              // the penalty springs of its first row alone.
+              pressure -= pressure_weight_ * 2 * std::pow(spacing[j], D) * ps.pressure[i] *
+                          kernels_.spiky_gradient_factor(r) * rij;
+              return;
+            }
             const Real volume = ps.mass[j] / ps.density[j];
-            pressure -= volume * 0.5 * (ps.pressure[i] + ps.pressure[j]) *
+            pressure -= volume * pressure_weight_ * (ps.pressure[i] + ps.pressure[j]) *
                         kernels_.spiky_gradient_factor(r) * rij;
             viscous += volume * kernels_.viscosity_laplacian(r) * (ps.velocity[j] - ps.velocity[i]);
+            // Monaghan's artificial viscosity on approaching pairs: the damping of the sound
+            // waves that the gas-stiffness pressure carries and Müller et al. leave undamped.
+            const Real approach = (ps.velocity[i] - ps.velocity[j]).dot(rij);
+            if (approach < 0 && damping_ > 0) {
+              const Real mu = approach / (r2 + 0.01 * kernels_.h2);
+              pressure +=
+                  volume * ps.density[i] * damping_ * mu * kernels_.spiky_gradient_factor(r) * rij;
+            }
             normal += volume * kernels_.poly6_gradient_factor(r) * rij;
             curvature += volume * kernels_.poly6_laplacian(r);
           });
@@ -381,6 +418,13 @@ class PenaltySphModel final : public ParticleFluid<D> {
   io::CaseConfig config_;
   MullerKernels<D> kernels_;
   Real rest_density_, viscosity_, particle_mass_;
+  // rho0 over the summed density of a full lattice at the spacing: the poly6 sum misses rho0
+  // by a few per cent on a lattice, which k = c0^2 would turn into a pressure of its own.
+  Real lattice_correction_;
+  // The pressure force -sum V_j w (p_i + p_j) grad W: w = 1 estimates grad p; Müller et al.'s
+  // w = 1/2 estimates half of it, so that still water holds twice rho g h.
+  Real pressure_weight_;
+  Real damping_;  // alpha c0 h of the artificial viscosity [m^2/s]
   SolidContactSettings<D> settings_;
   SolidParticles<D> solids_;
   FieldHandle<Vec<D>> acceleration_, half_velocity_, boundary_force_;

@@ -29,6 +29,10 @@ PenaltySphParameters read_penalty_sph_parameters(const io::CaseConfig& config) {
                             {"clamp", "keep"}) == "keep";
   p.speed_factor = model.optional_positive("speed_factor", p.speed_factor);
   p.max_speed = model.optional_positive("max_speed", 0);
+  p.muller_pressure_force = model.optional_choice("pressure_force", "consistent", "pressure force",
+                                                  {"consistent", "muller"}) == "muller";
+  p.artificial_viscosity =
+      model.optional_non_negative("artificial_viscosity", p.artificial_viscosity);
   p.buoyancy = model.optional_non_negative("buoyancy", p.buoyancy);
   p.surface_tension = model.optional_non_negative("surface_tension", p.surface_tension);
   p.surface_threshold = model.optional_non_negative("surface_threshold", p.surface_threshold);
@@ -49,6 +53,8 @@ PenaltySphParameters read_penalty_sph_parameters(const io::CaseConfig& config) {
       layer.finish();
       p.solids.push_back(s);
     }
+    // Each fluid particle marks the layers it started above in the bits of one int32.
+    if (p.solids.size() > 31) model.fail("solids", "at most 31 solid layers");
   }
   model.finish();
 

@@ -25,6 +25,8 @@ struct PenaltySphParameters {
   bool keep_negative_pressure = false;  // false: p >= 0, no tension that clumps the surface
   double speed_factor = 10;             // c0 = speed_factor * max_speed
   double max_speed = 0;                 // expected largest speed; 0 = sqrt(2 g H)
+  bool muller_pressure_force = false;   // true: (p_i + p_j)/2, Müller et al.'s half gradient
+  double artificial_viscosity = 0.05;   // Monaghan's alpha, on the support h and c0 = sqrt(k)
   double buoyancy = 0;                  // b: the force b (rho - rho0) g
   double surface_tension = 0.0728;      // sigma [N/m] (water at 20 C)
   double surface_threshold = 7.065;     // l [1/m]: tension where the colour gradient exceeds it

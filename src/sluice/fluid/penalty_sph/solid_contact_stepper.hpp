@@ -111,8 +111,7 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       }
       nearest_reach = std::min(nearest_reach, solids.reach[k]);
       // Out of reach and still on the side it came from: no contact (most candidates).
-      if (r2 >= solids.reach[k] * solids.reach[k] &&
-          rel.dot(previous - solids.position[k]) >= 0) {
+      if (r2 >= solids.reach[k] * solids.reach[k] && rel.dot(previous - solids.position[k]) >= 0) {
         continue;
       }
       const PenaltyContact<D> p = penalty_contact<D>(
