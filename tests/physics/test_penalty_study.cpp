@@ -102,5 +102,43 @@ TEST(PenaltyStudy, ImpactForceGrowsAsTheSquareRootOfTheStiffness) {
   EXPECT_GT(r * r, 0.95);
 }
 
+// The bodies feel the reaction of the boundary forces the fluid felt in its sub-steps: water
+// resting on a fixed box that spans the tank presses on it with its weight.
+TEST(PenaltySphBodies, WaterRestingOnABoxPressesWithItsWeight) {
+  const std::string text = R"(
+name: water_on_a_box
+dimension: 2
+spacing: 0.005
+domain: {min: [0, 0], max: [0.2, 0.2]}
+end_time: 1.0
+output_interval: 1.0
+fluid:
+  blocks:
+    - {min: [0, 0.08], max: [0.2, 0.11]}
+walls:
+  - {type: tank, min: [0, 0], max: [0.2, 0.2], open: [z+]}
+bodies:
+  - {name: box, shape: box, size: [0.2, 0.04], density: 2000, position: [0.1, 0.05],
+     motion: fixed}
+model:
+  name: penalty-sph
+  surface_tension: 0
+)";
+  Simulation<2> sim(io::parse_case(text, "water_on_a_box.yaml"));
+  const double weight = sim.fluid().energy().mass * 9.81;
+  double sum = 0;
+  long samples = 0;
+  testing::run_until(sim, 1.0, [&](const StepClock& c) {
+    if (c.time <= 0.8) return;
+    sum += sim.coupler().fluid_force()[0].z();
+    ++samples;
+  });
+  ASSERT_GT(samples, 10);
+  const double mean = sum / samples;
+  std::printf("water on a box: mean load %.4g N/m over 0.8-1.0 s, weight %.4g N/m (%+.2f %%)\n",
+              mean, weight, 100 * (-mean / weight - 1));
+  EXPECT_NEAR(-mean, weight, 0.05 * weight);
+}
+
 }  // namespace
 }  // namespace sluice

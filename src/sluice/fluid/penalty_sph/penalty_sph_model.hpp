@@ -148,23 +148,27 @@ class PenaltySphModel final : public ParticleFluid<D> {
     }));
   }
 
-  // The reaction on each body particle of its penalty force and no-slip traction on the fluid,
-  // evaluated at the end of the step (the fluid's sub-steps are not split among the solids).
+  // The reaction of the boundary forces the fluid felt from each body particle: the penalty
+  // and no-slip forces of the last drift, as a mean force over its step, and the pressure the
+  // body particle holds for its fluid neighbours (compute_forces), as it is now.
   void body_point_forces(const std::vector<BodyKinematics>&,
                          std::vector<Vec3>& force) const override {
+    for (std::size_t k = 0; k < body_impulse_.size(); ++k) {
+      force[k] += to_3d<D>(body_impulse_[k] / last_dt_);
+    }
     const ParticleState<D>& s = this->state();
     const auto& ps = s.particles;
+    const auto& spacing = ps[solid_spacing_];
     for (std::size_t b = 0; b < ps.size(); ++b) {
       const std::int32_t k = ps.body_point[b];
       if (k < 0) continue;
-      const Real reach = (ps[solid_spacing_][b] + config_.spacing) / 2;
       Vec<D> sum = Vec<D>::Zero();
       s.cells.for_each_neighbor(
-          ps.position, b, kernels_.h2, [&](std::size_t i, const Vec<D>&, Real) {
+          ps.position, b, kernels_.h2, [&](std::size_t i, const Vec<D>& rbi, Real r2) {
             if (!ps.is_fluid(i)) return;
-            sum -= penalty_contact<D>(settings_.law, ps.position[i], ps.position[i], ps.velocity[i],
-                                      ps.position[b], ps.velocity[b], reach)
-                       .force;
+            // minus the force on i: -(-V_i w 2 V_b p_i grad W(x_i - x_b)), grad W along -rbi
+            sum -= ps.mass[i] / ps.density[i] * pressure_weight_ * 2 * std::pow(spacing[b], D) *
+                   ps.pressure[i] * kernels_.spiky_gradient_factor(std::sqrt(r2)) * rbi;
           });
       force[static_cast<std::size_t>(k)] += to_3d<D>(sum);
     }
@@ -273,6 +277,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
       solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
     }
     step_results_.assign(ps.size(), {});
+    body_impulses_.resize(ps.size());
     exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
       boundary[i] = Vec<D>::Zero();
       if (!ps.is_fluid(i)) return;
@@ -281,14 +286,21 @@ class PenaltySphModel final : public ParticleFluid<D> {
       // is x += dt v_half unless a solid acts.
       Vec<D>& v = half[i];
       v = ps.velocity[i] + 0.5 * dt * a[i];
-      step_results_[i] =
-          advance_against_solids<D>(settings_, solids_, ps.position[i], v, ps.mass[i],
-                                    ps.density[i], Vec<D>::Zero(), dt, candidates);
+      body_impulses_[i].clear();
+      step_results_[i] = advance_against_solids<D>(
+          settings_, solids_, ps.position[i], v, ps.mass[i], ps.density[i], Vec<D>::Zero(), dt,
+          candidates, has_bodies_ ? &body_impulses_[i] : nullptr);
       boundary[i] = step_results_[i].impulse / dt;
       ps.velocity[i] = v + 0.5 * dt * a[i];
     });
+    // Summed in particle order, so that the loads do not depend on the thread count.
+    body_impulse_.assign(this->body_points().size(), Vec<D>::Zero());
+    last_dt_ = dt;
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!ps.is_fluid(i)) continue;
+      for (const BodyImpulse<D>& b : body_impulses_[i]) {
+        body_impulse_[static_cast<std::size_t>(b.body_point)] += b.impulse;
+      }
       const SolidStepResult<D>& r = step_results_[i];
       ++fluid_steps_;
       substeps_ += r.substeps;
@@ -431,6 +443,9 @@ class PenaltySphModel final : public ParticleFluid<D> {
   FieldHandle<Real> solid_spacing_;
   FieldHandle<std::int32_t> layers_above_, passed_;
   std::vector<SolidStepResult<D>> step_results_;
+  std::vector<std::vector<BodyImpulse<D>>> body_impulses_;  // per fluid particle, scratch
+  std::vector<Vec<D>> body_impulse_;  // per body point over the last drift [N s], on the body
+  Real last_dt_ = 1;
   bool has_bodies_ = false;
   Real max_speed_ = 0, max_acceleration_ = 0;
   long steps_ = 0, fluid_steps_ = 0, contacts_ = 0, crossings_ = 0, substeps_ = 0, above_count_ = 0;

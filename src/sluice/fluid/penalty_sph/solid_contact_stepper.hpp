@@ -52,13 +52,23 @@ struct SolidStepResult {
   bool crossed = false;  // went past a solid particle's centre within a sub-step
 };
 
+// The impulse a fluid particle gave a body's solid particle (its body point) in a step.
+template <int D>
+struct BodyImpulse {
+  std::int32_t body_point = -1;
+  Vec<D> impulse = Vec<D>::Zero();
+};
+
 // Advances x, v by dt for a fluid particle of mass m and density rho, whose fluid force per
-// unit mass, gravity included, is `acceleration`. `candidates` is scratch.
+// unit mass, gravity included, is `acceleration`. `candidates` is scratch. With `on_bodies`,
+// the impulses on bodies' particles are appended to it: each sub-step's pair forces (explicit,
+// at its start) times its length, the reaction of what the fluid particle felt.
 template <int D>
 SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& settings,
                                           const SolidParticles<D>& solids, Vec<D>& x, Vec<D>& v,
                                           Real m, Real rho, const Vec<D>& acceleration, Real dt,
-                                          std::vector<std::uint32_t>& candidates) {
+                                          std::vector<std::uint32_t>& candidates,
+                                          std::vector<BodyImpulse<D>>* on_bodies = nullptr) {
   using Mat = Eigen::Matrix<Real, D, D>;
   SolidStepResult<D> out;
   const Real support = solids.support;
@@ -68,6 +78,14 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
   const Real omega = std::sqrt(settings.law.stiffness / m);
   const Real shortest = 0.2 / omega;
   thread_local std::vector<std::uint8_t> active;
+  // The forces of the bodies' particles on this fluid particle at a sub-step's start, with
+  // their share of the implicit step's stiffness and damping.
+  struct BodyForce {
+    std::int32_t body_point;
+    Vec<D> force, normal;  // normal zero for the no-slip drag
+    Real stiffness, damping;
+  };
+  thread_local std::vector<BodyForce> reactions;
   Vec<D> anchor = x, previous = x;
   bool listed = false;
   Real t = 0;
@@ -98,8 +116,10 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     Real approach = 0;  // the fastest approach along a contact's normal
     Real nearest_reach = support;
     active.assign(candidates.size(), 0);
+    reactions.clear();
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       const std::uint32_t k = candidates[c];
+      const bool on_body = on_bodies && solids.body_point[k] >= 0;
       const Vec<D> rel = x - solids.position[k];
       const Real r2 = rel.squaredNorm();
       if (r2 < h2 && settings.wall_friction > 0) {
@@ -107,6 +127,10 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
         const Real drag = settings.wall_friction * solids.volume[k] *
                           settings.kernels.viscosity_laplacian(std::sqrt(r2)) * fluid_volume;
         force -= drag * (v - solids.velocity[k]);
+        if (on_body) {
+          reactions.push_back(
+              {solids.body_point[k], -drag * (v - solids.velocity[k]), Vec<D>::Zero(), 0, drag});
+        }
         damping.diagonal().array() += drag;
       }
       nearest_reach = std::min(nearest_reach, solids.reach[k]);
@@ -125,9 +149,14 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       // sub-step and be thrown out by the depth it reached.
       const Mat nn = p.normal * p.normal.transpose();
       stiffness += settings.law.stiffness * nn;
+      const bool pulls = p.force.squaredNorm() == 0;
+      if (on_body) {
+        reactions.push_back({solids.body_point[k], p.force, p.normal, settings.law.stiffness,
+                             pulls ? 0 : settings.law.damping});
+      }
       approach = std::max(approach, -(v - solids.velocity[k]).dot(p.normal));
       spring_force += settings.law.stiffness * p.depth * p.normal;
-      if (p.force.squaredNorm() == 0) continue;
+      if (pulls) continue;
       force += p.force;
       damping += settings.law.damping * nn;
     }
@@ -162,6 +191,18 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     }
     const Vec<D> impulse = m * (v_new - v) - tau * m * acceleration;
     out.impulse += impulse;
+    // Each body particle's share of the implicit step, f_c - tau K_c v' - C_c (v' - v): the
+    // shares add up to the impulse the fluid particle took, so momentum is kept.
+    for (const BodyForce& r : reactions) {
+      Vec<D> f = r.force;
+      if (r.normal.squaredNorm() > 0) {
+        f -= (tau * r.stiffness * r.normal.dot(v_new) + r.damping * r.normal.dot(v_new - v)) *
+             r.normal;
+      } else {
+        f -= r.damping * (v_new - v);
+      }
+      on_bodies->push_back({r.body_point, -tau * f});
+    }
     out.peak_force = std::max(out.peak_force, impulse.norm() / tau);
     previous = x;
     x += tau * v_new;

@@ -19,6 +19,7 @@ struct SolidParticles {
   std::vector<Vec<D>> velocity;
   std::vector<Real> reach;   // where a fluid particle starts to touch: (L_b + l0) / 2 [m]
   std::vector<Real> volume;  // L_b^D, for the no-slip traction
+  std::vector<std::int32_t> body_point;  // a body's particle: its body point; else -1
   CellList<D> grid;
   Real support = 0;  // the contact support S: no solid acts on a fluid particle beyond it
 
@@ -31,6 +32,7 @@ struct SolidParticles {
               Real min_support) {
     std::vector<Vec<D>> x, v;
     std::vector<Real> b;
+    std::vector<std::int32_t> points;
     Vec<D> lo = Vec<D>::Constant(1e300), hi = Vec<D>::Constant(-1e300);
     support = min_support;
     for (std::size_t i = 0; i < particles.size(); ++i) {
@@ -38,6 +40,7 @@ struct SolidParticles {
       x.push_back(particles.position[i]);
       v.push_back(particles.velocity[i]);
       b.push_back(spacing[i]);
+      points.push_back(particles.body_point[i]);
       lo = lo.cwiseMin(particles.position[i]);
       hi = hi.cwiseMax(particles.position[i]);
       support = std::max(support, (spacing[i] + fluid_spacing) / 2);
@@ -46,6 +49,7 @@ struct SolidParticles {
     velocity.resize(x.size());
     reach.resize(x.size());
     volume.resize(x.size());
+    body_point.resize(x.size());
     if (x.empty()) return;
     grid = CellList<D>(lo, hi, 2 * support);
     std::vector<std::uint32_t> order;
@@ -55,6 +59,7 @@ struct SolidParticles {
       velocity[k] = v[order[k]];
       reach[k] = (b[order[k]] + fluid_spacing) / 2;
       volume[k] = std::pow(b[order[k]], D);
+      body_point[k] = points[order[k]];
     }
   }
 
