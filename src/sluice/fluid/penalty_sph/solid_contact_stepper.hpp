@@ -61,8 +61,8 @@ struct BodyImpulse {
 
 // Advances x, v by dt for a fluid particle of mass m and density rho, whose fluid force per
 // unit mass, gravity included, is `acceleration`. `candidates` is scratch. With `on_bodies`,
-// the impulses on bodies' particles are appended to it: each sub-step's pair forces (explicit,
-// at its start) times its length, the reaction of what the fluid particle felt.
+// the impulses on bodies' particles are appended to it: minus each one's share of every
+// sub-step's implicit force times its length, the reaction of what the fluid particle felt.
 template <int D>
 SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& settings,
                                           const SolidParticles<D>& solids, Vec<D>& x, Vec<D>& v,
