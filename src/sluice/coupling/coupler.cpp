@@ -1,6 +1,8 @@
 #include "sluice/coupling/coupler.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace sluice {
 
@@ -37,14 +39,34 @@ void Coupler::update_motion(double dt) {
   }
 }
 
+int Coupler::exchanges(double dt) const {
+  const double stiffness = fluid_ ? fluid_->boundary_stiffness() : 0;
+  double lightest = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < bodies_; ++b) {
+    if (!system_.bodies()[b].fixed) lightest = std::min(lightest, system_.bodies()[b].state.mass);
+  }
+  if (!(stiffness > 0) || std::isinf(lightest)) return 1;
+  return static_cast<int>(std::ceil(dt * std::sqrt(stiffness / lightest) / kExchangeAngle - 1e-9));
+}
+
 void Coupler::advance_bodies(double dt) {
-  rows_.clear();
-  if (fluid_ && fluid_->scheme() == CouplingScheme::kMonolithic)
-    fluid_->body_constraints(motion_, rows_);
-  most_substeps_ =
-      std::max(most_substeps_, system_.advance(dt, fluid_force_, fluid_moment_, &rows_));
-  update_motion(dt);
-  if (fluid_) fluid_->receive_body_motion(motion_);
+  const int pieces = std::max(1, exchanges(dt));
+  const double h = dt / pieces;
+  int substeps = 0;
+  for (int e = 0; e < pieces; ++e) {
+    if (e > 0) collect_loads();
+    rows_.clear();
+    if (fluid_ && fluid_->scheme() == CouplingScheme::kMonolithic)
+      fluid_->body_constraints(motion_, rows_);
+    substeps += system_.advance(h, fluid_force_, fluid_moment_, &rows_);
+    update_motion(h);
+    if (fluid_) {
+      fluid_->receive_body_motion(motion_);
+      fluid_->advance_with_bodies(h);
+    }
+  }
+  most_substeps_ = std::max(most_substeps_, substeps);
+  most_exchanges_ = std::max(most_exchanges_, pieces);
 }
 
 void Coupler::collect_loads() {

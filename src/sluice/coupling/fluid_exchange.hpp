@@ -23,6 +23,13 @@ class FluidExchange {
                                 std::vector<ConstraintRow>& /*rows*/) const {}
   // The bodies have moved: the fluid places its boundary on them.
   virtual void receive_body_motion(const std::vector<BodyKinematics>& motion) = 0;
+  // After receive_body_motion at the end of each exchange of length dt: a fluid that moves
+  // its particles with the bodies (rather than before them) does so here.
+  virtual void advance_with_bodies(double /*dt*/) {}
+  // The stiffness [N/m] of the springs by which the fluid's boundary holds a body's particle
+  // (penalty-sph), 0 when its loads are not springs. A step then holds as many exchanges as
+  // keep the lightest free body stable on one such spring, its load held between them.
+  virtual double boundary_stiffness() const { return 0; }
   // The fluid's force and moment (about the centre of mass) on each body, from its last force
   // evaluation.
   virtual std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const = 0;

@@ -5,6 +5,7 @@
 #include "sluice/fluid/body_particles.hpp"
 #include "sluice/fluid/mps/mps_factory.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_factory.hpp"
+#include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/wcsph/wcsph_factory.hpp"
 
 namespace sluice {
@@ -18,9 +19,17 @@ std::vector<std::string> ModelRegistry::names() const {
 std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                                                  const BodyGeometry& bodies) const {
   if (const auto found = factories_.find(config.model_name); found != factories_.end())
-    return found->second(config, bodies);
+    return found->second.make(config, bodies);
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.fail_choice("name", "model", config.model_name, names());
+}
+
+io::CaseConfig ModelRegistry::with_model_bodies(io::CaseConfig config) const {
+  if (!config.has_fluid()) return config;
+  const auto found = factories_.find(config.model_name);
+  if (found == factories_.end() || !found->second.bodies) return config;
+  for (io::BodyConfig& b : found->second.bodies(config)) config.bodies.push_back(std::move(b));
+  return config;
 }
 
 template <int D>
@@ -28,7 +37,7 @@ ModelRegistry shipped_models() {
   ModelRegistry registry;
   registry.add("wcsph", make_wcsph<D>);
   registry.add("mps", make_mps<D>);
-  registry.add("penalty-sph", make_penalty_sph<D>);
+  registry.add("penalty-sph", make_penalty_sph<D>, free_solid_grains);
   return registry;
 }
 

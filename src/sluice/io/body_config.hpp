@@ -57,6 +57,13 @@ struct BodyConfig {
   std::array<bool, 3> locked_translation{};
   std::array<bool, 3> locked_rotation{};
   ContactMaterial material;
+  // A grain that a model added to the case (penalty-sph's free solid layers): a fluid sees it as
+  // one solid particle at its centre of mass, as large as the body, not as particles under its
+  // surface. Not a case-file key.
+  bool seen_as_one_particle = false;
+  // Where messages about it point when it is not an entry of `bodies` (a grain: its layer's
+  // key path, "model.solids[0]"); empty: "bodies[N]".
+  std::string key;
   int line = 0;  // of the list entry
   // Where messages about its starting position point (MapReader::place_of).
   std::string position_file;

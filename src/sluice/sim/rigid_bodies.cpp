@@ -133,8 +133,9 @@ RigidBodies::RigidBodies(const io::CaseConfig& config)
 
   // The starting layout: inside the domain, and no two bodies overlapping.
   auto fail = [&](std::size_t b, const std::string& key, const std::string& problem) {
+    const std::string& grain_key = configs_[b].key;
     throw InputError(configs_[b].position_file, configs_[b].position_line,
-                     fmt::format("bodies[{}].{}", b, key), problem);
+                     grain_key.empty() ? fmt::format("bodies[{}].{}", b, key) : grain_key, problem);
   };
   const double tolerance = 1e-9 * (config.domain.max - config.domain.min).norm();
   AxisBox inside = config.domain;
@@ -203,6 +204,10 @@ std::vector<BodyKinematics> RigidBodies::motion() const {
 std::vector<BodyPoint> RigidBodies::points_under_surface(int layers) const {
   std::vector<BodyPoint> out;
   for (std::size_t b = 0; b < count(); ++b) {
+    if (configs_[b].seen_as_one_particle) {
+      out.push_back({b, Vec3::Zero()});
+      continue;
+    }
     for (const Vec3& x : sample_under_surface(configs_[b], spacing_, layers, dimension_))
       out.push_back({b, axes_[b].transpose() * (x - centre_of_mass_[b])});
   }

@@ -116,6 +116,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.frames = frames.frames_written();
   summary.solid_substeps = sim.bodies().substeps();
   summary.most_substeps_per_step = sim.coupler().most_substeps();
+  summary.most_exchanges_per_step = sim.coupler().most_exchanges();
   summary.stages = timers.entries();
   summary.fluid_counters = fluid.counters();
   const std::vector<std::string> labels = probes.labels();
@@ -173,14 +174,15 @@ std::string stats_json(const RunSummary& r) {
       "  \"particle_steps_per_second\": {:.6g},\n  \"fluid_particle_steps_per_second\": {:.6g},\n"
       "  \"wall_seconds_per_simulated_second\": {:.6g},\n  \"frames\": {},\n"
       "  \"bodies\": {},\n  \"solid_substeps\": {},\n  \"solid_substeps_per_step\": {:.6g},\n"
-      "  \"most_solid_substeps_in_a_step\": {},\n"
+      "  \"most_solid_substeps_in_a_step\": {},\n  \"most_body_exchanges_in_a_step\": {},\n"
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
       r.particles, r.fluid_particles, r.steps, r.simulated_time, r.wall_seconds, r.threads,
       r.particle_steps_per_second(), fluid_rate,
       r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0, r.frames, r.bodies,
       r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
-      r.most_substeps_per_step, json_map(r.fluid_counters), json_map(r.final_probes), stages);
+      r.most_substeps_per_step, r.most_exchanges_per_step, json_map(r.fluid_counters),
+      json_map(r.final_probes), stages);
 }
 
 }  // namespace sluice

@@ -6,9 +6,9 @@ namespace sluice {
 
 template <int D>
 Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& models)
-    : config_(config),
-      bodies_(std::make_unique<RigidBodies>(config)),
-      fluid_(make_fluid_system<D>(config, *bodies_, models)),
+    : config_(models.with_model_bodies(config)),
+      bodies_(std::make_unique<RigidBodies>(config_)),
+      fluid_(make_fluid_system<D>(config_, *bodies_, models)),
       coupler_(bodies_->system(), bodies_->count(), fluid_.get(), config.contact.subcycling) {
   StageList after_bodies;
   fluid_->append_stages(stages_, after_bodies);

@@ -19,8 +19,8 @@ namespace sluice {
 template <int D>
 class Simulation {
  public:
-  // Builds the bodies, the fluid (the model the case names among `models`) and the coupling
-  // from a validated case (throws InputError).
+  // Builds the bodies (the case's and those its model adds), the fluid (the model the case
+  // names among `models`) and the coupling from a validated case (throws InputError).
   Simulation(const io::CaseConfig& config, const ModelRegistry& models);
   explicit Simulation(const io::CaseConfig& config) : Simulation(config, shipped_models<D>()) {}
 
@@ -43,7 +43,7 @@ class Simulation {
   const Coupler& coupler() const { return coupler_; }
   const StageTimers& timers() const { return timers_; }
   StageTimers& timers() { return timers_; }
-  const io::CaseConfig& config() const { return config_; }
+  const io::CaseConfig& config() const { return config_; }  // with the model's bodies
 
  private:
   io::CaseConfig config_;

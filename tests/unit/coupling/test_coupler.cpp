@@ -57,6 +57,49 @@ TEST(Coupler, HoldsTheLastLoadAndHandsOverTheMotion) {
   EXPECT_EQ(coupler.most_substeps(), 1);
 }
 
+// A fluid that holds the bodies on springs of `stiffness`: it records each exchange's length.
+class SpringHeld final : public FluidExchange {
+ public:
+  explicit SpringHeld(double stiffness) : stiffness_(stiffness) {}
+  void receive_body_motion(const std::vector<BodyKinematics>&) override {}
+  void advance_with_bodies(double dt) override { pieces.push_back(dt); }
+  double boundary_stiffness() const override { return stiffness_; }
+  std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
+    return std::vector<Wrench>(motion.size());
+  }
+  std::vector<double> pieces;
+
+ private:
+  double stiffness_;
+};
+
+TEST(Coupler, SpringsSplitTheStepForTheLightestBody) {
+  // omega = sqrt(5e4 / 1.5e-3) = 5774 rad/s: a step of 0.01 s in pieces of omega h <= 0.25.
+  MultibodySystem system = one_free_block(1.5e-3);
+  SpringHeld fluid(5e4);
+  Coupler coupler(system, 1, &fluid, true);
+  const int expected = static_cast<int>(std::ceil(0.01 * std::sqrt(5e4 / 1.5e-3) / 0.25));
+  EXPECT_EQ(coupler.exchanges(0.01), expected);
+  EXPECT_EQ(expected, 231);
+  coupler.advance_bodies(0.01);
+  ASSERT_EQ(fluid.pieces.size(), std::size_t(expected));
+  double sum = 0;
+  for (const double h : fluid.pieces) sum += h;
+  EXPECT_NEAR(sum, 0.01, 1e-15);
+  EXPECT_EQ(coupler.most_exchanges(), expected);
+  // The block fell through all the pieces, as in one step.
+  EXPECT_NEAR(coupler.motion()[0].velocity[2], -0.1, 1e-12);
+}
+
+TEST(Coupler, NoSpringsOrNoFreeBodyMeansOneExchange) {
+  MultibodySystem system = one_free_block(1.5e-3);
+  SpringHeld soft(0);
+  EXPECT_EQ(Coupler(system, 1, &soft, true).exchanges(0.01), 1);
+  system.bodies()[0].fixed = true;
+  SpringHeld stiff(5e4);
+  EXPECT_EQ(Coupler(system, 1, &stiff, true).exchanges(0.01), 1);
+}
+
 TEST(Coupler, WithoutSubCyclingTheFluidTakesTheSolidStep) {
   // A ball resting on a floor: its contact needs steps far below a millisecond.
   MultibodySystem system(0.01, Vec3(0, 0, -10));

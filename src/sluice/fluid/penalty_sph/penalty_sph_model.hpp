@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "sluice/core/errors.hpp"
@@ -74,6 +75,8 @@ class PenaltySphModel final : public ParticleFluid<D> {
     passed_ = ps.add_int_field({"passed_solid", "1", true});
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!ps.is_fluid(i)) ps[solid_spacing_][i] = config_.spacing;
+      // A grain of a free layer is one solid particle as wide as the grain.
+      if (const io::BodyConfig* grain = grain_of(i)) ps[solid_spacing_][i] = 2 * grain->radius;
     }
     add_solid_layers();
     has_bodies_ = this->body_points().size() > 0;
@@ -149,28 +152,15 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
   // The reaction of the boundary forces the fluid felt from each body particle: the penalty
-  // and no-slip forces of the last drift, as a mean force over its step, and the pressure the
-  // body particle holds for its fluid neighbours (compute_forces), as it is now.
+  // and no-slip forces of the last drift, as a mean force over it, and the pressure the body
+  // particle holds for its fluid neighbours (as of the last force evaluation).
   void body_point_forces(const std::vector<BodyKinematics>&,
                          std::vector<Vec3>& force) const override {
     for (std::size_t k = 0; k < body_impulse_.size(); ++k) {
       force[k] += to_3d<D>(body_impulse_[k] / last_dt_);
     }
-    const ParticleState<D>& s = this->state();
-    const auto& ps = s.particles;
-    const auto& spacing = ps[solid_spacing_];
-    for (std::size_t b = 0; b < ps.size(); ++b) {
-      const std::int32_t k = ps.body_point[b];
-      if (k < 0) continue;
-      Vec<D> sum = Vec<D>::Zero();
-      s.cells.for_each_neighbor(
-          ps.position, b, kernels_.h2, [&](std::size_t i, const Vec<D>& rbi, Real r2) {
-            if (!ps.is_fluid(i)) return;
-            // minus the force on i: -(-V_i w 2 V_b p_i grad W(x_i - x_b)), grad W along -rbi
-            sum -= ps.mass[i] / ps.density[i] * pressure_weight_ * 2 * std::pow(spacing[b], D) *
-                   ps.pressure[i] * kernels_.spiky_gradient_factor(std::sqrt(r2)) * rbi;
-          });
-      force[static_cast<std::size_t>(k)] += to_3d<D>(sum);
+    for (std::size_t k = 0; k < body_pressure_force_.size(); ++k) {
+      force[k] += to_3d<D>(body_pressure_force_[k]);
     }
   }
 
@@ -221,26 +211,31 @@ class PenaltySphModel final : public ParticleFluid<D> {
     return out;
   }
 
-  // The case's solid layers as wall particles of their own spacing; a fluid block that
-  // overlaps one is an input error.
+  // The body of particle i when it is a grain of a free solid layer, else null.
+  const io::BodyConfig* grain_of(std::size_t i) const {
+    const std::int32_t k = this->state().particles.body_point[i];
+    if (k < 0) return nullptr;
+    const io::BodyConfig& body = config_.bodies[this->body_points()[std::size_t(k)].body];
+    return body.seen_as_one_particle ? &body : nullptr;
+  }
+
+  // The case's fixed solid layers as wall particles of their own spacing (a free layer's
+  // grains are the case's bodies); a fluid block that overlaps a layer is an input error.
+  // For each layer, the bodies of its grains (after the case's own bodies, in layer order).
   void add_solid_layers() {
     if (p_.solids.empty()) return;
     ParticleState<D>& s = this->state();
     auto& ps = s.particles;
+    std::size_t grains = 0;
+    for (const SolidLayerConfig& layer : p_.solids) {
+      if (layer.free) grains += solid_layer_points<D>(layer, config_).size();
+    }
+    std::size_t next_grain = config_.bodies.size() - grains;
     for (const SolidLayerConfig& layer : p_.solids) {
       const Real spacing = layer.spacing_ratio * config_.spacing;
-      AxisBox inside = layer.box;
-      for (int a = 0; a < 3; ++a) {
-        inside.min[a] = std::max(inside.min[a], config_.domain.min[a]);
-        inside.max[a] = std::min(inside.max[a], config_.domain.max[a]);
-      }
-      const std::vector<Vec<D>> points = sample_box_volume<D>(inside, spacing);
-      if (points.empty()) {
-        throw InputError(config_.file(), layer.line, layer.key + ".spacing_ratio",
-                         fmt::format("the layer holds no solid particle inside the domain at "
-                                     "L_b = {} x {} m; make the box larger than L_b",
-                                     layer.spacing_ratio, config_.spacing));
-      }
+      const std::vector<Vec<D>> points = solid_layer_points<D>(layer, config_);
+      grain_bodies_.emplace_back(next_grain, layer.free ? next_grain + points.size() : next_grain);
+      next_grain = grain_bodies_.back().second;
       for (const auto& block : config_.fluid.blocks) {
         if (block.box.overlaps(layer.box, 0)) {
           throw InputError(
@@ -248,6 +243,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
               fmt::format("the solid layer overlaps the fluid block '{}'", block.name));
         }
       }
+      if (layer.free) continue;
       const Real mass = layer.density * std::pow(spacing, D);
       for (const Vec<D>& x : points) {
         ps.add(x, Vec<D>::Zero(), layer.density, mass, ParticleKind::kWall);
@@ -266,42 +262,120 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
   // Half kick with the held fluid force, then the drift through the solids (which may stop
-  // the particle), then the end-of-step velocity predicted for the viscosity.
+  // the particle). With bodies, only the particles that cannot meet one within the step drift
+  // now; the rest drift with the bodies, exchange by exchange (advance_with_bodies).
   void kick_drift(Real dt) {
     auto& ps = this->state().particles;
     const auto& a = ps[acceleration_];
-    auto& boundary = ps[boundary_force_];
     auto& half = ps[half_velocity_];
-    // Walls and solid layers stand still: gathered once, again every step only with bodies.
-    if (has_bodies_ || steps_ == 0) {
-      solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
-    }
+    // Walls and fixed solid layers stand still: gathered once.
+    if (steps_ == 0) solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
     step_results_.assign(ps.size(), {});
-    body_impulses_.resize(ps.size());
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      boundary[i] = Vec<D>::Zero();
-      if (!ps.is_fluid(i)) return;
+    step_dt_ = dt;
+    drifted_ = 0;
+    exec::Default::for_each(ps.size(), [&](std::size_t i) {
+      if (ps.is_fluid(i)) half[i] = ps.velocity[i] + 0.5 * dt * a[i];
+    });
+    if (!has_bodies_) {
+      drifting_.clear();
+      for (std::size_t i = 0; i < ps.size(); ++i) {
+        if (ps.is_fluid(i)) drifting_.push_back(static_cast<std::uint32_t>(i));
+      }
+      drift(drifting_, dt, false);
+      finish_drift();
+      return;
+    }
+    // The bodies' particles where they stand, and the fluid particles out of their reach
+    // over the whole step (however fast either moves) drift at once.
+    body_particles_.clear();
+    Vec<D> lo = Vec<D>::Constant(std::numeric_limits<Real>::max()), hi = -lo;
+    Real body_speed = 0;
+    body_start_.resize(this->body_points().size());
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const std::int32_t point = ps.body_point[i];
+      if (point < 0) continue;
+      body_particles_.push_back(static_cast<std::uint32_t>(i));
+      body_start_[std::size_t(point)] = ps.position[i];
+      lo = lo.cwiseMin(ps.position[i]);
+      hi = hi.cwiseMax(ps.position[i]);
+      body_speed = std::max(body_speed, ps.velocity[i].norm());
+    }
+    solids_.gather_moving(ps, ps[solid_spacing_], body_particles_, body_start_, 0);
+    std::vector<std::uint32_t> far;
+    drifting_.clear();
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!ps.is_fluid(i)) continue;
+      const Real travel = (half[i].norm() + body_speed) * dt + a[i].norm() * dt * dt;
+      const Real margin = 2 * solids_.support + 2 * travel;
+      const bool out_of_reach = ((ps.position[i] - lo).array() < -margin).any() ||
+                                ((ps.position[i] - hi).array() > margin).any();
+      (out_of_reach ? far : drifting_).push_back(static_cast<std::uint32_t>(i));
+    }
+    drift(far, dt, false);
+  }
+
+  // One exchange with the bodies: they have advanced by dt and the fluid's body particles
+  // stand where they now are; the fluid particles in their reach drift by dt against them.
+  void advance_with_bodies(double dt) override {
+    auto& ps = this->state().particles;
+    solids_.gather_moving(ps, ps[solid_spacing_], body_particles_, body_start_, dt);
+    drift(drifting_, dt, true);
+    drifted_ += dt;
+    if (drifted_ >= step_dt_ * (1 - 1e-9)) finish_drift();
+  }
+
+  // The bodies hang on the fluid by springs of Ks each: the coupler exchanges often enough
+  // for the lightest of them.
+  double boundary_stiffness() const override { return settings_.law.stiffness; }
+
+  // Drifts the fluid particles `which` by dt through the solids, adding to their step's
+  // results; with `on_bodies`, the bodies' share of it becomes their load for the next
+  // exchange.
+  void drift(const std::vector<std::uint32_t>& which, Real dt, bool on_bodies) {
+    auto& ps = this->state().particles;
+    auto& half = ps[half_velocity_];
+    if (on_bodies) body_impulses_.resize(which.size());
+    exec::Default::for_each_balanced(which.size(), [&](std::size_t n) {
+      const std::size_t i = which[n];
       thread_local std::vector<std::uint32_t> candidates;
       // The fluid force's half kick is in v already, so the stepper holds none: the drift
       // is x += dt v_half unless a solid acts.
-      Vec<D>& v = half[i];
-      v = ps.velocity[i] + 0.5 * dt * a[i];
-      body_impulses_[i].clear();
-      step_results_[i] = advance_against_solids<D>(
-          settings_, solids_, ps.position[i], v, ps.mass[i], ps.density[i], Vec<D>::Zero(), dt,
-          candidates, has_bodies_ ? &body_impulses_[i] : nullptr);
-      boundary[i] = step_results_[i].impulse / dt;
-      ps.velocity[i] = v + 0.5 * dt * a[i];
+      if (on_bodies) body_impulses_[n].clear();
+      const SolidStepResult<D> r = advance_against_solids<D>(
+          settings_, solids_, ps.position[i], half[i], ps.mass[i], ps.density[i], Vec<D>::Zero(),
+          dt, candidates, on_bodies ? &body_impulses_[n] : nullptr);
+      SolidStepResult<D>& total = step_results_[i];
+      total.impulse += r.impulse;
+      total.peak_force = std::max(total.peak_force, r.peak_force);
+      total.substeps += r.substeps;
+      total.touched = total.touched || r.touched;
+      total.crossed = total.crossed || r.crossed;
     });
+    if (!on_bodies) return;
     // Summed in particle order, so that the loads do not depend on the thread count.
     body_impulse_.assign(this->body_points().size(), Vec<D>::Zero());
     last_dt_ = dt;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (!ps.is_fluid(i)) continue;
-      for (const BodyImpulse<D>& b : body_impulses_[i]) {
+    for (std::size_t n = 0; n < which.size(); ++n) {
+      for (const BodyImpulse<D>& b : body_impulses_[n]) {
         body_impulse_[static_cast<std::size_t>(b.body_point)] += b.impulse;
       }
+    }
+  }
+
+  // The step's drift is done: the end-of-step velocity predicted for the viscosity, the
+  // boundary force, the counters and which particles passed a layer.
+  void finish_drift() {
+    auto& ps = this->state().particles;
+    const auto& a = ps[acceleration_];
+    const auto& half = ps[half_velocity_];
+    auto& boundary = ps[boundary_force_];
+    const Real dt = step_dt_;
+    update_pass_levels();
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!ps.is_fluid(i)) continue;
       const SolidStepResult<D>& r = step_results_[i];
+      ps.velocity[i] = half[i] + 0.5 * dt * a[i];
+      boundary[i] = r.impulse / dt;
       ++fluid_steps_;
       substeps_ += r.substeps;
       if (r.touched) {
@@ -312,12 +386,35 @@ class PenaltySphModel final : public ParticleFluid<D> {
       crossings_ += r.crossed;
       for (std::size_t k = 0; k < p_.solids.size(); ++k) {
         const bool started_above = ps[layers_above_][i] & (1 << k);
-        if (started_above && ps.position[i][kUpAxis<D>] < p_.solids[k].box.min[2]) {
+        if (started_above && ps.position[i][kUpAxis<D>] < pass_level_[k]) {
           ps[passed_][i] = 1;
         }
       }
     }
     ++steps_;
+  }
+
+  // Below this height a fluid particle has passed a layer: a fixed layer's bottom, or the
+  // lowest centre of a free layer's grains as they lie now (a bed on the floor has no bottom
+  // to pass: what gets between its grains' centres went through its pores).
+  void update_pass_levels() {
+    const auto& ps = this->state().particles;
+    pass_level_.resize(p_.solids.size());
+    for (std::size_t k = 0; k < p_.solids.size(); ++k) {
+      pass_level_[k] =
+          p_.solids[k].free ? std::numeric_limits<Real>::infinity() : Real(p_.solids[k].box.min[2]);
+    }
+    if (!has_bodies_) return;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const std::int32_t point = ps.body_point[i];
+      if (point < 0) continue;
+      const std::size_t body = this->body_points()[std::size_t(point)].body;
+      for (std::size_t k = 0; k < grain_bodies_.size(); ++k) {
+        if (body >= grain_bodies_[k].first && body < grain_bodies_[k].second) {
+          pass_level_[k] = std::min(pass_level_[k], ps.position[i][kUpAxis<D>]);
+        }
+      }
+    }
   }
 
   void kick(Real dt) {
@@ -382,11 +479,13 @@ class PenaltySphModel final : public ParticleFluid<D> {
             viscous += volume * kernels_.viscosity_laplacian(r) * (ps.velocity[j] - ps.velocity[i]);
             // Monaghan's artificial viscosity on approaching pairs: the damping of the sound
             // waves that the gas-stiffness pressure carries and Müller et al. leave undamped.
+            // On the pair's mean density, so that i and j feel equal and opposite forces.
             const Real approach = (ps.velocity[i] - ps.velocity[j]).dot(rij);
             if (approach < 0 && damping_ > 0) {
               const Real mu = approach / (r2 + 0.01 * kernels_.h2);
-              pressure +=
-                  volume * ps.density[i] * damping_ * mu * kernels_.spiky_gradient_factor(r) * rij;
+              const Real mean_density = 0.5 * (rho_i + ps.density[j]);
+              pressure += ps.mass[j] * rho_i / mean_density * damping_ * mu *
+                          kernels_.spiky_gradient_factor(r) * rij;
             }
             normal += volume * kernels_.poly6_gradient_factor(r) * rij;
             curvature += volume * kernels_.poly6_laplacian(r);
@@ -399,6 +498,29 @@ class PenaltySphModel final : public ParticleFluid<D> {
       }
       a[i] = f / rho_i;
     });
+    if (has_bodies_) update_body_pressure_forces();
+  }
+
+  // Minus the pressure force each body particle exerts on its fluid neighbours, which hold
+  // their own pressure on it (compute_forces).
+  void update_body_pressure_forces() {
+    const ParticleState<D>& s = this->state();
+    const auto& ps = s.particles;
+    const auto& spacing = ps[solid_spacing_];
+    body_pressure_force_.assign(this->body_points().size(), Vec<D>::Zero());
+    for (std::size_t b = 0; b < ps.size(); ++b) {
+      const std::int32_t k = ps.body_point[b];
+      if (k < 0) continue;
+      Vec<D> sum = Vec<D>::Zero();
+      s.cells.for_each_neighbor(
+          ps.position, b, kernels_.h2, [&](std::size_t i, const Vec<D>& rbi, Real r2) {
+            if (!ps.is_fluid(i)) return;
+            // minus the force on i: -(-V_i w 2 V_b p_i grad W(x_i - x_b)), grad W along -rbi
+            sum -= ps.mass[i] / ps.density[i] * pressure_weight_ * 2 * std::pow(spacing[b], D) *
+                   ps.pressure[i] * kernels_.spiky_gradient_factor(std::sqrt(r2)) * rbi;
+          });
+      body_pressure_force_[static_cast<std::size_t>(k)] = sum;
+    }
   }
 
   // 1/2 Ks d^2 over the fluid-solid pairs in contact now.
@@ -442,9 +564,16 @@ class PenaltySphModel final : public ParticleFluid<D> {
   FieldHandle<Vec<D>> acceleration_, half_velocity_, boundary_force_;
   FieldHandle<Real> solid_spacing_;
   FieldHandle<std::int32_t> layers_above_, passed_;
-  std::vector<SolidStepResult<D>> step_results_;
-  std::vector<std::vector<BodyImpulse<D>>> body_impulses_;  // per fluid particle, scratch
+  std::vector<SolidStepResult<D>> step_results_;            // per particle, over the step
+  std::vector<std::vector<BodyImpulse<D>>> body_impulses_;  // per drifting particle, scratch
+  std::vector<std::uint32_t> drifting_;        // the fluid particles that drift with the bodies
+  std::vector<std::uint32_t> body_particles_;  // the bodies' particles, this step
+  std::vector<Vec<D>> body_start_;             // per body point: where the last exchange left it
+  Real step_dt_ = 0, drifted_ = 0;
   std::vector<Vec<D>> body_impulse_;  // per body point over the last drift [N s], on the body
+  std::vector<Vec<D>> body_pressure_force_;  // per body point [N], on the body
+  std::vector<std::pair<std::size_t, std::size_t>> grain_bodies_;  // per layer: [first, end)
+  std::vector<Real> pass_level_;                                   // per layer [m]
   Real last_dt_ = 1;
   bool has_bodies_ = false;
   Real max_speed_ = 0, max_acceleration_ = 0;

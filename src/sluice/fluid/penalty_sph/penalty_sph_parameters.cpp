@@ -5,7 +5,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "sluice/core/errors.hpp"
 #include "sluice/fluid/free_fall_speed.hpp"
+#include "sluice/io/body_reader.hpp"
 
 namespace sluice {
 
@@ -50,6 +52,12 @@ PenaltySphParameters read_penalty_sph_parameters(const io::CaseConfig& config) {
       s.box = io::read_box(layer, config.dimension);
       s.spacing_ratio = layer.required_positive("spacing_ratio");
       s.density = layer.optional_positive("density", s.density);
+      s.free = layer.optional<bool>("free", false);
+      if (!s.free && layer.has("material")) {
+        layer.fail("material",
+                   "only read for a free layer (free: true): a fixed one does not move");
+      }
+      s.material = io::read_material(layer, s.material);
       layer.finish();
       p.solids.push_back(s);
     }
@@ -66,6 +74,57 @@ PenaltySphParameters read_penalty_sph_parameters(const io::CaseConfig& config) {
   if (p.wall_friction < 0)
     p.wall_friction = config.fluid.density * config.fluid.kinematic_viscosity;
   return p;
+}
+
+template <int D>
+std::vector<Vec<D>> solid_layer_points(const SolidLayerConfig& layer,
+                                       const io::CaseConfig& config) {
+  AxisBox inside = layer.box;
+  for (int a = 0; a < 3; ++a) {
+    inside.min[a] = std::max(inside.min[a], config.domain.min[a]);
+    inside.max[a] = std::min(inside.max[a], config.domain.max[a]);
+  }
+  std::vector<Vec<D>> points = sample_box_volume<D>(inside, layer.spacing_ratio * config.spacing);
+  if (points.empty()) {
+    throw InputError(config.file(), layer.line, layer.key + ".spacing_ratio",
+                     fmt::format("the layer holds no solid particle inside the domain at "
+                                 "L_b = {} x {} m; make the box larger than L_b",
+                                 layer.spacing_ratio, config.spacing));
+  }
+  return points;
+}
+
+template std::vector<Vec<2>> solid_layer_points<2>(const SolidLayerConfig&, const io::CaseConfig&);
+template std::vector<Vec<3>> solid_layer_points<3>(const SolidLayerConfig&, const io::CaseConfig&);
+
+std::vector<io::BodyConfig> free_solid_grains(const io::CaseConfig& config) {
+  std::vector<io::BodyConfig> grains;
+  const PenaltySphParameters p = read_penalty_sph_parameters(config);
+  for (std::size_t k = 0; k < p.solids.size(); ++k) {
+    const SolidLayerConfig& layer = p.solids[k];
+    if (!layer.free) continue;
+    std::vector<Vec3> centres;
+    if (config.dimension == 2) {
+      for (const Vec<2>& x : solid_layer_points<2>(layer, config)) centres.push_back(to_3d<2>(x));
+    } else {
+      centres = solid_layer_points<3>(layer, config);
+    }
+    for (std::size_t n = 0; n < centres.size(); ++n) {
+      io::BodyConfig b;
+      b.name = fmt::format("solids{}_grain{}", k, n);
+      b.shape = io::BodyShape::kSphere;
+      b.radius = 0.5 * layer.spacing_ratio * config.spacing;
+      b.density = layer.density;
+      b.position = centres[n];
+      b.material = layer.material;
+      b.seen_as_one_particle = true;
+      b.key = layer.key;
+      b.line = b.position_line = layer.line;
+      b.position_file = config.file();
+      grains.push_back(std::move(b));
+    }
+  }
+  return grains;
 }
 
 }  // namespace sluice

@@ -5,16 +5,21 @@
 #include <string>
 #include <vector>
 
+#include "sluice/geometry/sampling.hpp"
+#include "sluice/io/body_config.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice {
 
 // A box of solid particles on a lattice of their own spacing L_b = spacing_ratio * dx (seed
-// 002's concrete and granular beds), fixed in place.
+// 002's concrete and granular beds): fixed in place, or free, each particle then a grain (a
+// sphere of diameter L_b) among the case's rigid bodies.
 struct SolidLayerConfig {
   AxisBox box;
   double spacing_ratio = 1;  // L_b / dx
-  double density = 2800;     // of the solid [kg/m^3]: the particles' mass, for output
+  double density = 2800;     // of the solid [kg/m^3]: a free grain's mass
+  bool free = false;
+  ContactMaterial material;  // of a free layer's grains
   std::string key;           // its key path, for messages: "model.solids[0]"
   int line = 0;
 };
@@ -42,5 +47,14 @@ struct PenaltySphParameters {
 };
 
 PenaltySphParameters read_penalty_sph_parameters(const io::CaseConfig& config);
+
+// The centres of a solid layer's particles: its box, within the domain, on a lattice of spacing
+// L_b. Throws InputError when it holds none.
+template <int D>
+std::vector<Vec<D>> solid_layer_points(const SolidLayerConfig& layer, const io::CaseConfig& config);
+
+// The grains of the case's free solid layers, as sphere bodies to add to its own (in layer
+// order, each layer's grains in lattice order), named LAYER_grainN.
+std::vector<io::BodyConfig> free_solid_grains(const io::CaseConfig& config);
 
 }  // namespace sluice

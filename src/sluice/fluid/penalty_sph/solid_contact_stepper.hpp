@@ -14,6 +14,8 @@
 //    to 0.2 / omega where a new contact would start within them. That resolves the impact,
 //    which decides whether the particle gets through, and stays stable and cheap for a
 //    particle resting on the solid however stiff the spring.
+// A body's solid particles move at constant velocity through the drift (SolidParticles::at),
+// so that the springs see them move, not jump.
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -79,16 +81,17 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
   const Real shortest = 0.2 / omega;
   thread_local std::vector<std::uint8_t> active;
   // The forces of the bodies' particles on this fluid particle at a sub-step's start, with
-  // their share of the implicit step's stiffness and damping.
+  // their share of the implicit step's stiffness and damping, and their velocity.
   struct BodyForce {
     std::int32_t body_point;
     Vec<D> force, normal;  // normal zero for the no-slip drag
     Real stiffness, damping;
+    Vec<D> solid_velocity;
   };
   thread_local std::vector<BodyForce> reactions;
   Vec<D> anchor = x, previous = x;
   bool listed = false;
-  Real t = 0;
+  Real t = 0, t_previous = 0;
   while (t < dt * (1 - 1e-12)) {
     ++out.substeps;
     if (!listed || (x - anchor).squaredNorm() > support * support) {
@@ -102,6 +105,7 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       const Real room = support - (x - anchor).norm();
       const Real tau = std::min(remaining, time_to_move(room, v.norm(), acceleration.norm()));
       previous = x;
+      t_previous = t;
       x += tau * v + 0.5 * tau * tau * acceleration;
       v += tau * acceleration;
       t += tau;
@@ -112,6 +116,7 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     // The forces at x and their derivatives; `active` marks the solids pressing now.
     Vec<D> force = m * acceleration;
     Mat stiffness = Mat::Zero(), damping = Mat::Zero();
+    Vec<D> stiffness_times_solid_velocity = Vec<D>::Zero();
     Vec<D> spring_force = Vec<D>::Zero();
     Real approach = 0;  // the fastest approach along a contact's normal
     Real nearest_reach = support;
@@ -120,26 +125,28 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       const std::uint32_t k = candidates[c];
       const bool on_body = on_bodies && solids.body_point[k] >= 0;
-      const Vec<D> rel = x - solids.position[k];
+      const Vec<D>& vb = solids.velocity[k];
+      const Vec<D> xb = solids.at(k, t);
+      const Vec<D> rel = x - xb;
       const Real r2 = rel.squaredNorm();
       if (r2 < h2 && settings.wall_friction > 0) {
         // f_ns = -mu_w V_b lap W_visc (v - v_b), a force density, times the particle's volume.
         const Real drag = settings.wall_friction * solids.volume[k] *
                           settings.kernels.viscosity_laplacian(std::sqrt(r2)) * fluid_volume;
-        force -= drag * (v - solids.velocity[k]);
+        force -= drag * (v - vb);
         if (on_body) {
           reactions.push_back(
-              {solids.body_point[k], -drag * (v - solids.velocity[k]), Vec<D>::Zero(), 0, drag});
+              {solids.body_point[k], -drag * (v - vb), Vec<D>::Zero(), 0, drag, vb});
         }
         damping.diagonal().array() += drag;
       }
       nearest_reach = std::min(nearest_reach, solids.reach[k]);
+      // Where the particle was at the last sub-step, seen from where the solid is now.
+      const Vec<D> previous_here = previous + (t - t_previous) * vb;
       // Out of reach and still on the side it came from: no contact (most candidates).
-      if (r2 >= solids.reach[k] * solids.reach[k] && rel.dot(previous - solids.position[k]) >= 0) {
-        continue;
-      }
-      const PenaltyContact<D> p = penalty_contact<D>(
-          settings.law, x, previous, v, solids.position[k], solids.velocity[k], solids.reach[k]);
+      if (r2 >= solids.reach[k] * solids.reach[k] && rel.dot(previous_here - xb) >= 0) continue;
+      const PenaltyContact<D> p =
+          penalty_contact<D>(settings.law, x, previous_here, v, xb, vb, solids.reach[k]);
       if (p.depth <= 0) continue;
       active[c] = 1;
       out.touched = true;
@@ -149,12 +156,13 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       // sub-step and be thrown out by the depth it reached.
       const Mat nn = p.normal * p.normal.transpose();
       stiffness += settings.law.stiffness * nn;
+      stiffness_times_solid_velocity += settings.law.stiffness * p.normal.dot(vb) * p.normal;
       const bool pulls = p.force.squaredNorm() == 0;
       if (on_body) {
         reactions.push_back({solids.body_point[k], p.force, p.normal, settings.law.stiffness,
-                             pulls ? 0 : settings.law.damping});
+                             pulls ? 0 : settings.law.damping, vb});
       }
-      approach = std::max(approach, -(v - solids.velocity[k]).dot(p.normal));
+      approach = std::max(approach, -(v - vb).dot(p.normal));
       spring_force += settings.law.stiffness * p.depth * p.normal;
       if (pulls) continue;
       force += p.force;
@@ -172,7 +180,10 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     Vec<D> v_new;
     for (;;) {
       const Mat inertia = inertia_of_v + tau * damping;
-      v_new = (inertia + tau * tau * stiffness).llt().solve(inertia * v + tau * force);
+      // The springs shorten by tau (v' - v_b) . n over the sub-step.
+      v_new = (inertia + tau * tau * stiffness)
+                  .llt()
+                  .solve(inertia * v + tau * force + tau * tau * stiffness_times_solid_velocity);
       // ...unless it would start to press on another solid deeper than an impact resolved
       // in fifths of 1/omega does: a spring switched on late stores energy it never took.
       if (tau <= shortest) break;
@@ -184,19 +195,20 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
         const std::uint32_t k = candidates[c];
         if (active[c]) continue;
         const Real inside = solids.reach[k] - allowed;  // closer than this: pressing too deep
-        late = inside > 0 && (x_new - solids.position[k]).squaredNorm() < inside * inside;
+        late = inside > 0 && (x_new - solids.at(k, t + tau)).squaredNorm() < inside * inside;
       }
       if (!late) break;
       tau = std::max(shortest, tau / 4);
     }
     const Vec<D> impulse = m * (v_new - v) - tau * m * acceleration;
     out.impulse += impulse;
-    // Each body particle's share of the implicit step, f_c - tau K_c v' - C_c (v' - v): the
-    // shares add up to the impulse the fluid particle took, so momentum is kept.
+    // Each body particle's share of the implicit step, f_c - tau K_c (v' - v_b) - C_c (v' - v):
+    // the shares add up to the impulse the fluid particle took, so momentum is kept.
     for (const BodyForce& r : reactions) {
       Vec<D> f = r.force;
       if (r.normal.squaredNorm() > 0) {
-        f -= (tau * r.stiffness * r.normal.dot(v_new) + r.damping * r.normal.dot(v_new - v)) *
+        f -= (tau * r.stiffness * r.normal.dot(v_new - r.solid_velocity) +
+              r.damping * r.normal.dot(v_new - v)) *
              r.normal;
       } else {
         f -= r.damping * (v_new - v);
@@ -205,6 +217,7 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     }
     out.peak_force = std::max(out.peak_force, impulse.norm() / tau);
     previous = x;
+    t_previous = t;
     x += tau * v_new;
     v = v_new;
     t += tau;

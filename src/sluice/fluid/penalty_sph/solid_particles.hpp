@@ -1,11 +1,14 @@
-// The solid particles a fluid particle of the penalty-sph model meets (walls, the case's solid
-// layers, bodies), copied out of the particle set once per step into compact arrays sorted on a
-// grid of their own. That grid's cells are two contact supports wide: a fluid particle collects
-// the solids within two supports of where it stands once, and the list serves every sub-step
-// while it stays within one support of that place (solid_contact_stepper.hpp).
+// The solid particles a fluid particle of the penalty-sph model meets, copied out of the
+// particle set into compact arrays sorted on grids of their own: the fixed ones (walls, the
+// case's fixed solid layers) once, the bodies' ones for every drift, each moving at a constant
+// velocity from where it was to where the bodies' advance put it. The grids' cells are two
+// contact supports wide: a fluid particle collects the solids within two supports of where it
+// stands once, and the list serves every sub-step while it stays within one support of that
+// place (solid_contact_stepper.hpp).
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "sluice/neighbor/cell_list.hpp"
@@ -15,62 +18,109 @@ namespace sluice {
 
 template <int D>
 struct SolidParticles {
-  std::vector<Vec<D>> position;
-  std::vector<Vec<D>> velocity;
-  std::vector<Real> reach;   // where a fluid particle starts to touch: (L_b + l0) / 2 [m]
-  std::vector<Real> volume;  // L_b^D, for the no-slip traction
+  // The fixed ones first, [0, fixed_count), then the bodies'.
+  std::vector<Vec<D>> position;  // at the start of the drift
+  std::vector<Vec<D>> velocity;  // fixed: zero; a body's: over the drift
+  std::vector<Real> reach;       // where a fluid particle starts to touch: (L_b + l0) / 2 [m]
+  std::vector<Real> volume;      // L_b^D, for the no-slip traction
   std::vector<std::int32_t> body_point;  // a body's particle: its body point; else -1
-  CellList<D> grid;
+  std::size_t fixed_count = 0;
+  CellList<D> fixed_grid, moving_grid;
   Real support = 0;  // the contact support S: no solid acts on a fluid particle beyond it
 
   bool empty() const { return position.empty(); }
+  // Where solid k is at time t of the drift.
+  Vec<D> at(std::size_t k, Real t) const { return position[k] + t * velocity[k]; }
 
-  // Every non-fluid particle of `particles`, with its spacing from `spacing` (L_b), for fluid
-  // particles of spacing `fluid_spacing`; `min_support` (the viscosity kernel's h) bounds S
-  // from below.
+  // Every non-fluid particle of `particles` that is not a body's, with its spacing from
+  // `spacing` (L_b), for fluid particles of spacing `fluid_spacing`; `min_support` (the
+  // viscosity kernel's h) bounds S from below, and so does every solid, bodies' included.
   void gather(const ParticleSet<D>& particles, const std::vector<Real>& spacing, Real fluid_spacing,
               Real min_support) {
-    std::vector<Vec<D>> x, v;
-    std::vector<Real> b;
-    std::vector<std::int32_t> points;
-    Vec<D> lo = Vec<D>::Constant(1e300), hi = Vec<D>::Constant(-1e300);
+    fluid_spacing_ = fluid_spacing;
+    std::vector<std::uint32_t> fixed;
     support = min_support;
     for (std::size_t i = 0; i < particles.size(); ++i) {
       if (particles.is_fluid(i)) continue;
-      x.push_back(particles.position[i]);
-      v.push_back(particles.velocity[i]);
-      b.push_back(spacing[i]);
-      points.push_back(particles.body_point[i]);
-      lo = lo.cwiseMin(particles.position[i]);
-      hi = hi.cwiseMax(particles.position[i]);
       support = std::max(support, (spacing[i] + fluid_spacing) / 2);
+      if (particles.body_point[i] < 0) fixed.push_back(static_cast<std::uint32_t>(i));
     }
-    position.resize(x.size());
-    velocity.resize(x.size());
-    reach.resize(x.size());
-    volume.resize(x.size());
-    body_point.resize(x.size());
-    if (x.empty()) return;
-    grid = CellList<D>(lo, hi, 2 * support);
-    std::vector<std::uint32_t> order;
-    grid.sort(x, order);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      position[k] = x[order[k]];
-      velocity[k] = v[order[k]];
-      reach[k] = (b[order[k]] + fluid_spacing) / 2;
-      volume[k] = std::pow(b[order[k]], D);
-      body_point[k] = points[order[k]];
-    }
+    clear();
+    fixed_grid = sorted_grid(particles, spacing, fixed, nullptr, 0);
+    fixed_count = position.size();
+  }
+
+  // The bodies' particles `bodies` (indices into `particles`) for a drift of dt: each moves from
+  // start[its body point] to where it is now, and start is then set to that place. With
+  // dt = 0 they stand where they are.
+  void gather_moving(const ParticleSet<D>& particles, const std::vector<Real>& spacing,
+                     const std::vector<std::uint32_t>& bodies, std::vector<Vec<D>>& start,
+                     Real dt) {
+    position.resize(fixed_count);
+    velocity.resize(fixed_count);
+    reach.resize(fixed_count);
+    volume.resize(fixed_count);
+    body_point.resize(fixed_count);
+    moving_grid = sorted_grid(particles, spacing, bodies, &start, dt);
   }
 
   // The solids within two supports of x, into `out` (cleared first).
   void near(const Vec<D>& x, std::vector<std::uint32_t>& out) const {
     out.clear();
-    if (empty()) return;
-    grid.for_each_near(position, x, 4 * support * support, [&](std::size_t k, const Vec<D>&, Real) {
-      out.push_back(static_cast<std::uint32_t>(k));
-    });
+    const Real r2 = 4 * support * support;
+    auto scan = [&](const CellList<D>& grid, std::size_t offset) {
+      grid.for_each_candidate_range(x, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::size_t k = offset + begin; k < offset + end; ++k) {
+          if ((x - position[k]).squaredNorm() < r2) out.push_back(static_cast<std::uint32_t>(k));
+        }
+      });
+    };
+    if (fixed_count > 0) scan(fixed_grid, 0);
+    if (position.size() > fixed_count) scan(moving_grid, fixed_count);
   }
+
+ private:
+  void clear() {
+    position.clear();
+    velocity.clear();
+    reach.clear();
+    volume.clear();
+    body_point.clear();
+  }
+
+  // Appends `which` particles sorted on a grid of cells two supports wide, and returns the grid;
+  // with `start`, each moves from start[body point] over dt (see gather_moving).
+  CellList<D> sorted_grid(const ParticleSet<D>& particles, const std::vector<Real>& spacing,
+                          const std::vector<std::uint32_t>& which, std::vector<Vec<D>>* start,
+                          Real dt) {
+    if (which.empty()) return {};
+    std::vector<Vec<D>> x(which.size());
+    Vec<D> lo = Vec<D>::Constant(std::numeric_limits<Real>::max()), hi = -lo;
+    for (std::size_t n = 0; n < which.size(); ++n) {
+      const std::uint32_t i = which[n];
+      x[n] = start ? (*start)[static_cast<std::size_t>(particles.body_point[i])]
+                   : particles.position[i];
+      lo = lo.cwiseMin(x[n]);
+      hi = hi.cwiseMax(x[n]);
+    }
+    CellList<D> grid(lo, hi, 2 * support);
+    std::vector<std::uint32_t> order;
+    grid.sort(x, order);
+    for (const std::uint32_t n : order) {
+      const std::uint32_t i = which[n];
+      const std::int32_t point = particles.body_point[i];
+      position.push_back(x[n]);
+      velocity.push_back(start && dt > 0 ? Vec<D>((particles.position[i] - x[n]) / dt)
+                                         : Vec<D>::Zero());
+      reach.push_back((spacing[i] + fluid_spacing_) / 2);
+      volume.push_back(std::pow(spacing[i], D));
+      body_point.push_back(point);
+      if (start) (*start)[static_cast<std::size_t>(point)] = particles.position[i];
+    }
+    return grid;
+  }
+
+  Real fluid_spacing_ = 0;
 };
 
 }  // namespace sluice
