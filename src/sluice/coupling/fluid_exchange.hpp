@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "sluice/coupling/body_motion.hpp"
-#include "sluice/rigid/constraint_row.hpp"
+#include "sluice/ccp/constraint_row.hpp"
 
 namespace sluice {
 

@@ -8,12 +8,17 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <vector>
 
 namespace sluice::exec {
 
+// Sums are taken over fixed blocks of kSumBlock indices, each block in index order, and the
+// blocks' sums in block order: the same additions whatever the number of threads.
+inline constexpr std::size_t kSumBlock = 4096;
+
 // OpenMP threads with a static schedule, so each thread gets a contiguous block of the
-// cell-sorted particles. Only maxima and minima are reduced here: they do not depend on the
-// order of summation, so the answer is the same on any number of threads.
+// cell-sorted particles. Maxima and minima do not depend on the order of reduction; sums
+// are taken block by block (kSumBlock), so the answer is the same on any number of threads.
 struct OpenMP {
   template <class Body>
   static void for_each(std::size_t n, Body&& body) {
@@ -38,6 +43,29 @@ struct OpenMP {
     for (long i = 0; i < count; ++i) result = std::max(result, value(static_cast<std::size_t>(i)));
     return result;
   }
+  template <class Value>
+  static double sum_of(std::size_t n, Value&& value) {
+    const long blocks = static_cast<long>((n + kSumBlock - 1) / kSumBlock);
+    if (blocks <= 1) return block_sum(0, n, value);
+    std::vector<double> partial(static_cast<std::size_t>(blocks));
+#pragma omp parallel for schedule(static)
+    for (long k = 0; k < blocks; ++k) {
+      const std::size_t begin = static_cast<std::size_t>(k) * kSumBlock;
+      partial[static_cast<std::size_t>(k)] =
+          block_sum(begin, std::min(n, begin + kSumBlock), value);
+    }
+    double total = 0;
+    for (const double p : partial) total += p;
+    return total;
+  }
+
+ private:
+  template <class Value>
+  static double block_sum(std::size_t begin, std::size_t end, Value& value) {
+    double sum = 0;
+    for (std::size_t i = begin; i < end; ++i) sum += value(i);
+    return sum;
+  }
 };
 
 // One thread, in index order: the reference the OpenMP policy must agree with.
@@ -55,6 +83,17 @@ struct Serial {
     double result = -std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i) result = std::max(result, value(i));
     return result;
+  }
+  // The same blocks as OpenMP::sum_of, so that both give the same sum.
+  template <class Value>
+  static double sum_of(std::size_t n, Value&& value) {
+    double total = 0;
+    for (std::size_t begin = 0; begin < n; begin += kSumBlock) {
+      double sum = 0;
+      for (std::size_t i = begin; i < std::min(n, begin + kSumBlock); ++i) sum += value(i);
+      total += sum;
+    }
+    return total;
   }
 };
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sluice/rigid/body_interaction.hpp"
-#include "sluice/rigid/constraint_row.hpp"
+#include "sluice/ccp/constraint_row.hpp"
 
 namespace sluice {
 

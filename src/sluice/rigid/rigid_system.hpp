@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "sluice/rigid/body_interaction.hpp"
-#include "sluice/rigid/constraint_row.hpp"
+#include "sluice/ccp/constraint_row.hpp"
 #include "sluice/rigid/rigid_body.hpp"
 
 namespace sluice {

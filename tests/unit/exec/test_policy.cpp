@@ -41,5 +41,22 @@ TYPED_TEST(ExecutionPolicy, MaximumAsTheSerialLoop) {
   omp_set_num_threads(before);
 }
 
+// Sums over fixed blocks: bit for bit the serial loop's, on any number of threads (the
+// values span 8 orders of magnitude, so another order of addition would round differently).
+TYPED_TEST(ExecutionPolicy, SumAsTheSerialLoop) {
+  const auto value = [](std::size_t i) { return std::sin(0.37 * static_cast<double>(i)) * i * i; };
+  const int before = omp_get_max_threads();
+  for (int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    for (std::size_t n : {std::size_t(0), std::size_t(10), std::size_t(50000)}) {
+      EXPECT_EQ(TypeParam::sum_of(n, value), exec::Serial::sum_of(n, value)) << n;
+    }
+  }
+  omp_set_num_threads(before);
+  double plain = 0;
+  for (std::size_t i = 0; i < 10; ++i) plain += value(i);
+  EXPECT_EQ(exec::Serial::sum_of(10, value), plain);
+}
+
 }  // namespace
 }  // namespace sluice

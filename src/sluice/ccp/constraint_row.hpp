@@ -1,7 +1,8 @@
 // A velocity-level constraint on the bodies: one row of a Jacobian, J (v, w) = bias, on one
 // body or between two, whose impulse lambda is held within [lower, upper]: an equality
-// (-inf, inf), a non-penetration (0, inf), or a friction bound. Contact and, in the monolithic
-// coupling scheme, a fluid model contribute rows; the rigid system solves them together.
+// (-inf, inf), a non-penetration (0, inf: J (v, w) >= bias, with lambda > 0 only where it is
+// met with equality), or a bound. Joints, contacts and, in the monolithic coupling scheme, a
+// fluid model contribute rows; three rows may also form a friction cone (row_group.hpp).
 #pragma once
 
 #include <cstddef>

@@ -1,0 +1,95 @@
+// APGD (Mazhar, Heyn, Negrut & Tasora, ACM TOG 34(3), 2015, Algorithm 1): Nesterov's
+// accelerated projected gradient on the CCP's quadratic program. Each iteration: the gradient
+// at the extrapolated point y, a projected step of 1/L from it, the step halved (L doubled)
+// until f falls below its quadratic model at y, the momentum update, a restart of the momentum
+// when the step went uphill, and L relaxed by 0.9 for the next iteration. The best iterate
+// (smallest residual) is returned. Two products with N an iteration.
+#include <cmath>
+#include <limits>
+
+#include "sluice/ccp/ccp_solver.hpp"
+#include "sluice/ccp/ccp_vectors.hpp"
+
+namespace sluice {
+
+CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVelocities& velocities) {
+  using namespace ccp_vectors;
+  const std::size_t n = problem.size();
+  std::vector<Real> gamma(n), gamma_new(n), y(n), g_y(n), g_new(n), r(n), best(n), scratch, diag(n);
+  CcpResult out;
+  if (n == 0) {
+    problem.gradient(gamma, g_new, velocities);
+    return out;
+  }
+  problem.diagonal(diag);
+  const Real alpha = residual_alpha(diag);
+  // r = the gradient at gamma = 0; N x = gradient(x) - r.
+  std::vector<Real> zero(n, 0);
+  problem.gradient(zero, r, velocities);
+  // f(x) = 1/2 x^T (N x + r) + ... = 1/2 x^T (g(x) + r).
+  auto objective = [&](std::span<const Real> x, std::span<const Real> g) {
+    return 0.5 * exec::Default::sum_of(n, [&](std::size_t i) { return x[i] * (g[i] + r[i]); });
+  };
+  // The Lipschitz constant of the gradient, estimated along the vector of ones (a lower bound
+  // of N's largest eigenvalue; the backtracking raises it where it falls short).
+  std::vector<Real> ones(n, 1);
+  problem.gradient(ones, g_new, velocities);
+  Real lipschitz =
+      std::sqrt(exec::Default::sum_of(
+                    n, [&](std::size_t i) { return (g_new[i] - r[i]) * (g_new[i] - r[i]); }) /
+                Real(n));
+  if (!(lipschitz > 0)) lipschitz = 1;
+
+  problem.warm_start(gamma);
+  problem.project(gamma);
+  y = gamma;
+  Real theta = 1;
+  Real best_residual = std::numeric_limits<Real>::infinity();
+  best = gamma;
+  for (out.iterations = 1; out.iterations <= settings.max_iterations; ++out.iterations) {
+    problem.gradient(y, g_y, velocities);
+    const Real f_y = objective(y, g_y);
+    Real f_new = 0;
+    for (;;) {
+      add_scaled(y, -1 / lipschitz, g_y, gamma_new);
+      problem.project(gamma_new);
+      problem.gradient(gamma_new, g_new, velocities);
+      f_new = objective(gamma_new, g_new);
+      const Real model = f_y + exec::Default::sum_of(n, [&](std::size_t i) {
+                           const Real d = gamma_new[i] - y[i];
+                           return g_y[i] * d + 0.5 * lipschitz * d * d;
+                         });
+      // Round-off: a step that changes f by less than its last bits is accepted.
+      if (f_new <= model + 1e-14 * std::abs(f_y) || lipschitz > 1e300) break;
+      lipschitz *= 2;
+    }
+    const Real theta_new = 0.5 * (-theta * theta + theta * std::sqrt(theta * theta + 4));
+    const Real beta = theta * (1 - theta) / (theta * theta + theta_new);
+    const Real residual = problem.residual(gamma_new, g_new, alpha, scratch);
+    if (residual < best_residual) {
+      best_residual = residual;
+      best = gamma_new;
+    }
+    if (residual < settings.tolerance) break;
+    // An uphill step (the gradient at y against the step from gamma): restart the momentum.
+    const Real uphill =
+        exec::Default::sum_of(n, [&](std::size_t i) { return g_y[i] * (gamma_new[i] - gamma[i]); });
+    if (uphill > 0) {
+      y = gamma_new;
+      theta = 1;
+    } else {
+      exec::Default::for_each(
+          n, [&](std::size_t i) { y[i] = gamma_new[i] + beta * (gamma_new[i] - gamma[i]); });
+      theta = theta_new;
+    }
+    gamma.swap(gamma_new);
+    lipschitz *= 0.9;
+  }
+  out.iterations = std::min(out.iterations, settings.max_iterations);
+  out.residual = best_residual;
+  problem.gradient(best, g_new, velocities);
+  problem.store(best);
+  return out;
+}
+
+}  // namespace sluice

@@ -1,0 +1,48 @@
+// A cone complementarity problem (CCP), the velocity-level step of contact, friction and joints
+// (Anitescu & Tasora, Comput. Optim. Appl. 47, 2010): impulses gamma, each block in its cone
+// (a contact's friction cone) or within its bounds (a joint row, a motor), minimising
+//   f(gamma) = 1/2 gamma^T N gamma + r^T gamma,  N = D^T M^-1 D,  r = D^T v* - target,
+// where v* are the bodies' velocities predicted without the impulses. Its gradient N gamma + r
+// is the rows' velocities after the impulses less what they ask for; the solution meets every
+// row in the complementarity sense. N is never formed: a product with it is one pass of the
+// groups' impulses onto the bodies and one pass back (matrix-free, as in Mazhar et al. 2015).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "sluice/ccp/ccp_bodies.hpp"
+#include "sluice/ccp/constraint_group.hpp"
+
+namespace sluice {
+
+class CcpProblem {
+ public:
+  CcpBodies bodies;  // with the predicted velocities v*
+
+  // Adds a group of unknowns (not owned: it must outlive the solve).
+  void add(ConstraintGroup& group);
+  void clear_groups();
+  std::size_t size() const { return size_; }
+
+  // g = D^T u - target for the velocities u = v* + M^-1 D gamma, which it also returns.
+  void gradient(std::span<const Real> gamma, std::span<Real> g, BodyVelocities& u) const;
+  void project(std::span<Real> gamma) const;
+  void diagonal(std::span<Real> out) const;
+  void warm_start(std::span<Real> gamma) const;
+  void store(std::span<const Real> gamma);
+
+  // The velocity-level residual of gamma with gradient g [m/s]: the largest component of
+  // (gamma - P(gamma - alpha g)) / alpha, which tends, as alpha -> 0, to each active row's
+  // velocity error and each inactive row's violation (0 for a row that separates). alpha is
+  // a thousandth of the smallest effective mass of a row (1 / the largest of `diagonal`).
+  Real residual(std::span<const Real> gamma, std::span<const Real> g, Real alpha,
+                std::vector<Real>& scratch) const;
+
+ private:
+  std::vector<ConstraintGroup*> groups_;
+  std::vector<std::size_t> offsets_;
+  std::size_t size_ = 0;
+};
+
+}  // namespace sluice
