@@ -26,6 +26,13 @@ void print_summary(const sluice::RunSummary& r) {
                r.bodies, r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
                r.most_substeps_per_step);
   }
+  if (const auto& v = r.velocity_steps; v.solves > 0) {
+    fmt::print(
+        "  velocity-level solves: {}, {:.3g} iterations each (at most {}), residual {:.3g} m/s "
+        "on average, at most {:.3g}\n",
+        v.solves, double(v.iterations) / double(v.solves), v.most_iterations,
+        v.residual_sum / double(v.solves), v.largest_residual);
+  }
   for (const auto& [name, value] : r.fluid_counters) fmt::print("  {}: {:.6g}\n", name, value);
   double total = 0;
   for (const auto& e : r.stages) total += e.seconds;

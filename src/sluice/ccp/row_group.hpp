@@ -4,6 +4,8 @@
 // rows; a granular fluid's millions of sphere contacts have a group of their own.
 #pragma once
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "sluice/ccp/constraint_group.hpp"
@@ -22,8 +24,21 @@ class RowGroup final : public ConstraintGroup {
   // A contact: its normal row (bias: the least normal velocity) and two tangent rows (bias 0),
   // their impulses in the cone of friction mu and cohesion c (an impulse the contact may pull
   // with; the rows' bounds are ignored).
+  // `key` names the contact for the next step's warm start (cones()).
   void add_cone(const ConstraintRow& normal, const ConstraintRow& u, const ConstraintRow& v,
-                Real mu, Real cohesion);
+                Real mu, Real cohesion, std::uint64_t key = 0);
+  // Each cone's key and first row.
+  std::vector<std::pair<std::uint64_t, std::size_t>> cones() const;
+  // The cone complementarity relaxes Coulomb's law: a contact that slips at u_t separates at
+  // mu |u_t| (Anitescu & Tasora 2010). This asks each cone's normal row for mu |u_t| more,
+  // u_t its slip at the velocities u, which cancels that separation once the slip settles (a
+  // fixed point of the exact law); returns the largest change of a row's target [m/s].
+  Real correct_slip(const BodyVelocities& u);
+
+  // Drops the rows (a cone: by its normal row) that cannot move any body: on fixed bodies or
+  // locked degrees of freedom alone (a 2D case's rows out of its plane). Nothing would hold
+  // their impulses back.
+  void drop_inert(const CcpBodies& bodies);
 
   const std::vector<ConstraintRow>& rows() const { return rows_; }
   std::vector<ConstraintRow>& rows() { return rows_; }
@@ -42,6 +57,8 @@ class RowGroup final : public ConstraintGroup {
     std::size_t first = 0;
     bool cone = false;
     Real friction = 0, cohesion = 0;
+    std::uint64_t key = 0;
+    Real slip_correction = 0;  // mu |u_t| added to the normal row's bias
   };
   std::vector<ConstraintRow> rows_;
   std::vector<Block> blocks_;

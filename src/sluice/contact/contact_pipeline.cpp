@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sluice/ccp/cone.hpp"
+
 namespace sluice {
 
 namespace {
@@ -62,6 +64,56 @@ void ContactPipeline::evaluate(const std::vector<SystemBody>& bodies, double dt,
   for (const auto& [a, b] : pairs_) narrow_phase_.find(a, b, bodies, shapes_, surfaces_, contacts_);
   contacts_.end_pass();
   solver_->solve(contacts_, bodies, shapes_, dt, force, torque);
+}
+
+void ContactPipeline::contact_constraints(const std::vector<SystemBody>& bodies, double h,
+                                          double recovery_speed, RowGroup& rows) {
+  place(bodies);
+  candidates(bodies, {}, distance_);
+  contacts_.begin_pass();
+  // Pairs whose gap may close within the step: up to the contact distance apart.
+  for (const auto& [a, b] : pairs_) {
+    narrow_phase_.find(a, b, bodies, shapes_, surfaces_, contacts_, -distance_);
+  }
+  contacts_.end_pass();
+  for (const Contact& c : contacts_.contacts()) {
+    const Vec3& xa = bodies[c.a].state.position;
+    const Vec3& xb = bodies[c.b].state.position;
+    const Real mu = std::min(shapes_[c.a].material.friction, shapes_[c.b].material.friction);
+    for (std::size_t k = 0; k < c.pairs.size(); ++k) {
+      const ParticlePair& p = c.pairs[k];
+      Vec3 u, v;
+      tangent_basis(p.normal, u, v);
+      ConstraintRow rows_of_pair[3];
+      const Vec3 axes[3] = {p.normal, u, v};
+      const Vec3 ra = p.point - xa, rb = p.point - xb;
+      for (int r = 0; r < 3; ++r) {
+        ConstraintRow& row = rows_of_pair[r];
+        row.a = c.a;
+        row.b = c.b;
+        row.linear_a = -axes[r];
+        row.angular_a = -ra.cross(axes[r]);
+        row.linear_b = axes[r];
+        row.angular_b = rb.cross(axes[r]);
+      }
+      // A gap may close within the step; an overlap is taken back at up to recovery_speed.
+      rows_of_pair[0].bias = std::min(p.overlap / h, recovery_speed);
+      // The contact's identity and the pair's place in it: the same while both last.
+      const std::uint64_t key = (c.id << 20) | std::min<std::uint64_t>(k, (1u << 20) - 1);
+      if (const auto found = last_impulses_.find(key); found != last_impulses_.end()) {
+        for (int r = 0; r < 3; ++r) rows_of_pair[r].impulse = found->second[std::size_t(r)];
+      }
+      rows.add_cone(rows_of_pair[0], rows_of_pair[1], rows_of_pair[2], mu, 0, key);
+    }
+  }
+}
+
+void ContactPipeline::remember_contact_impulses(const RowGroup& rows) {
+  last_impulses_.clear();
+  for (const auto& [key, first] : rows.cones()) {
+    last_impulses_[key] = {rows.rows()[first].impulse, rows.rows()[first + 1].impulse,
+                           rows.rows()[first + 2].impulse};
+  }
 }
 
 double ContactPipeline::stable_step(const std::vector<SystemBody>& bodies, double dt) {

@@ -4,7 +4,9 @@
 // that turns the contacts into forces. The rigid system sees it as a BodyInteraction.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "sluice/contact/broad_phase.hpp"
@@ -31,6 +33,12 @@ class ContactPipeline final : public BodyInteraction {
   // The solver's step for every pair of bodies that can come within reach during dt.
   double stable_step(const std::vector<SystemBody>& bodies, double dt) override;
   double stored_energy() const override { return solver_->stored_energy(); }
+  // Complementarity: each particle pair of the narrow phase as a friction cone (the pair's
+  // smaller friction), warm-started from the impulses of the same contact's pair of the last
+  // call.
+  void contact_constraints(const std::vector<SystemBody>& bodies, double h, double recovery_speed,
+                           RowGroup& rows) override;
+  void remember_contact_impulses(const RowGroup& rows) override;
 
  private:
   void place(const std::vector<SystemBody>& bodies);
@@ -49,6 +57,8 @@ class ContactPipeline final : public BodyInteraction {
   std::vector<AxisBox> boxes_;
   std::vector<bool> fixed_, large_;
   std::vector<BodyPair> pairs_;
+  // The last call's normal and tangential impulses by (contact id, pair index).
+  std::unordered_map<std::uint64_t, std::array<Real, 3>> last_impulses_;
 };
 
 }  // namespace sluice

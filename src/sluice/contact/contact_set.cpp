@@ -37,7 +37,9 @@ void ContactSet::add(std::size_t a, std::size_t b, const ParticlePair& pair) {
     first_normal_.push_back(pair.normal);
   }
   Contact& c = contacts_[slot];
-  const double w = pair.overlap * std::sqrt(pair.overlap) * pair.area;
+  // A pair that only comes near (complementarity's envelope) weighs nothing.
+  const double overlap = std::max(pair.overlap, 0.0);
+  const double w = overlap * std::sqrt(overlap) * pair.area;
   c.overlap = std::max(c.overlap, pair.overlap);
   c.area += pair.area;
   c.weight += w;
@@ -49,7 +51,15 @@ void ContactSet::add(std::size_t a, std::size_t b, const ParticlePair& pair) {
 void ContactSet::end_pass() {
   std::vector<bool> taken(last_.size(), false);
   for (Contact& c : contacts_) {
-    c.point /= c.weight;
+    if (c.weight > 0) {
+      c.point /= c.weight;
+    } else {  // pairs near but none overlapping: their plain mean
+      c.point = c.normal = Vec3::Zero();
+      for (const ParticlePair& p : c.pairs) {
+        c.point += p.point / double(c.pairs.size());
+        c.normal += p.normal;
+      }
+    }
     c.normal.normalize();
     // The closest-turned contact of the last pass between the same bodies, if any is near.
     std::size_t match = last_.size();

@@ -24,12 +24,19 @@ class MultibodySystem {
 
   std::size_t add(ContactBody body);
 
+  // Contact by the penalty law with sub-cycling (the default), or as friction cones of the
+  // velocity-level step (complementarity).
+  void set_method(ContactMethod method, const VelocityStepSettings& settings) {
+    rigid_.set_method(method, settings);
+  }
+  void add_joint(const Joint& joint) { rigid_.add_joint(joint); }
+
   // Advances by dt. `force` and `torque` (one per body, may be empty) are held over the
-  // sub-steps, as the fluid's force is; `rows` (may be null) are velocity constraints solved
-  // at every sub-step (RigidSystem::advance). Returns the number of sub-steps taken.
+  // sub-steps, as the fluid's force is; `participant` (may be null) joins every velocity-level
+  // solve (RigidSystem::advance). Returns the number of sub-steps taken.
   int advance(double dt, const std::vector<Vec3>& force = {}, const std::vector<Vec3>& torque = {},
-              std::vector<ConstraintRow>* rows = nullptr) {
-    return rigid_.advance(dt, force, torque, rows);
+              CcpParticipant* participant = nullptr) {
+    return rigid_.advance(dt, force, torque, participant);
   }
   // The solid step that the contacts in reach during a coming step of dt need: a
   // `substep_fraction` of the shortest contact period among them; dt when none is in reach.
@@ -46,6 +53,7 @@ class MultibodySystem {
   // The deepest overlap at any sub-step so far (penalty solver; 0 for another).
   double deepest_overlap_ever() const { return penalty_ ? penalty_->deepest_overlap_ever() : 0; }
   long substeps_taken() const { return rigid_.substeps_taken(); }
+  const RigidSystem& rigid() const { return rigid_; }
 
  private:
   // On the heap, so that the rigid system's pointer to it survives moving the system.

@@ -7,7 +7,8 @@ namespace sluice {
 
 void NarrowPhase::find(std::size_t a, std::size_t b, const std::vector<SystemBody>& bodies,
                        const std::vector<ContactShape>& shapes,
-                       const std::vector<WorldSurface>& surfaces, ContactSet& contacts) {
+                       const std::vector<WorldSurface>& surfaces, ContactSet& contacts,
+                       double least_overlap) {
   const double reach2 = distance_ * distance_;
   const WorldSurface& surface_a = surfaces[a];
   const WorldSurface& surface_b = surfaces[b];
@@ -62,7 +63,7 @@ void NarrowPhase::find(std::size_t a, std::size_t b, const std::vector<SystemBod
     } else if (B.spherical && flat_a) {
       overlap = B.contact_radius - (state_b.position - points_a[k]).dot(n_k);
     }
-    if (overlap <= 0) continue;
+    if (overlap <= least_overlap) continue;
     const double area = std::min(A.surface_area[k], B.surface_area[l]);
     // Where the pair's force acts: on a sphere, its true contact point, a radius less half
     // the overlap from its centre (the sampled pairs lie around it, and their mean nearer

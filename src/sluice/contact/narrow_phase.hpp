@@ -18,10 +18,12 @@ class NarrowPhase {
  public:
   explicit NarrowPhase(double contact_distance) : distance_(contact_distance) {}
 
-  // Adds the overlapping particle pairs of bodies a < b to `contacts`.
+  // Adds the particle pairs of bodies a < b that overlap by more than `least_overlap` to
+  // `contacts`: 0 for the penalty law; minus an envelope for the complementarity step, which
+  // must see a gap before it closes.
   void find(std::size_t a, std::size_t b, const std::vector<SystemBody>& bodies,
             const std::vector<ContactShape>& shapes, const std::vector<WorldSurface>& surfaces,
-            ContactSet& contacts);
+            ContactSet& contacts, double least_overlap = 0);
 
  private:
   double distance_;

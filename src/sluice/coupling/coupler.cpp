@@ -51,14 +51,17 @@ int Coupler::exchanges(double dt) const {
 
 void Coupler::advance_bodies(double dt) {
   const int pieces = std::max(1, exchanges(dt));
+  const bool monolithic = fluid_ && fluid_->scheme() == CouplingScheme::kMonolithic;
   const double h = dt / pieces;
   int substeps = 0;
   for (int e = 0; e < pieces; ++e) {
     if (e > 0) collect_loads();
-    rows_.clear();
-    if (fluid_ && fluid_->scheme() == CouplingScheme::kMonolithic)
-      fluid_->body_constraints(motion_, rows_);
-    substeps += system_.advance(h, fluid_force_, fluid_moment_, &rows_);
+    if (monolithic) {
+      // The fluid acts through the solve; its loads are for the output only.
+      substeps += system_.advance(h, {}, {}, fluid_);
+    } else {
+      substeps += system_.advance(h, fluid_force_, fluid_moment_);
+    }
     update_motion(h);
     if (fluid_) {
       fluid_->receive_body_motion(motion_);

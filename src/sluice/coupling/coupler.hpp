@@ -3,11 +3,11 @@
 // their contacts need, with the fluid's last load held; the fluid then sees the bodies where
 // they now are, evaluates its forces, and hands back the loads for the next step. Without
 // sub-cycling, the fluid itself steps at the solid step whenever a contact is in reach (the
-// reference of C6). Monolithic (a fluid whose scheme says so): before the bodies advance, the
-// fluid contributes velocity constraints, which the bodies' solver meets at every sub-step
-// together with the loads. A fluid that holds the bodies on stiff springs (penalty-sph) asks
-// for several exchanges within its step: the bodies advance piece by piece, and the fluid
-// moves with them after each piece and hands back its loads.
+// reference of C6). Monolithic (a fluid whose scheme says so): the fluid joins every
+// velocity-level solve of the bodies with its rows, or its own bodies and contacts
+// (rigid/ccp_participant.hpp); its loads are then reported, not held. A fluid that holds the bodies
+// on stiff springs (penalty-sph) asks for several exchanges within its step: the bodies advance
+// piece by piece, and the fluid moves with them after each piece and hands back its loads.
 #pragma once
 
 #include <vector>
@@ -44,8 +44,6 @@ class Coupler {
   // omega that stays stable while omega h is below about 1 per spring on the body. Measured on
   // seed 002's free granular bed: omega h = 1 diverges, 0.5 holds; 0.25 keeps a factor 4.
   static constexpr double kExchangeAngle = 0.25;
-  // The monolithic scheme's rows of the last step, with their impulses (per sub-step).
-  const std::vector<ConstraintRow>& constraints() const { return rows_; }
 
  private:
   void update_motion(double dt);
@@ -56,7 +54,6 @@ class Coupler {
   bool subcycling_;
   std::vector<BodyKinematics> motion_;
   std::vector<Vec3> fluid_force_, fluid_moment_;
-  std::vector<ConstraintRow> rows_;
   int most_substeps_ = 0;
   int most_exchanges_ = 1;
 };

@@ -5,22 +5,19 @@
 #include <vector>
 
 #include "sluice/coupling/body_motion.hpp"
-#include "sluice/ccp/constraint_row.hpp"
+#include "sluice/rigid/ccp_participant.hpp"
 
 namespace sluice {
 
-// Explicit co-simulation holds the fluid's loads over the bodies' sub-steps; in the
-// monolithic scheme the fluid also contributes velocity constraints that the bodies' solver
-// meets at every sub-step, together with whatever else binds the bodies.
+// Explicit co-simulation holds the fluid's loads over the bodies' sub-steps. In the monolithic
+// scheme the fluid also joins the bodies' velocity-level step (rigid/ccp_participant.hpp):
+// rows on the bodies, or bodies and contacts of its own (a granular fluid's spheres), met in
+// every solve together with whatever else binds the bodies.
 enum class CouplingScheme { kCoSimulation, kMonolithic };
 
-class FluidExchange {
+class FluidExchange : public CcpParticipant {
  public:
-  virtual ~FluidExchange() = default;
   virtual CouplingScheme scheme() const { return CouplingScheme::kCoSimulation; }
-  // The monolithic scheme's rows for the coming step, from the bodies' motion now.
-  virtual void body_constraints(const std::vector<BodyKinematics>& /*motion*/,
-                                std::vector<ConstraintRow>& /*rows*/) const {}
   // The bodies have moved: the fluid places its boundary on them.
   virtual void receive_body_motion(const std::vector<BodyKinematics>& motion) = 0;
   // After receive_body_motion at the end of each exchange of length dt: a fluid that moves
@@ -31,7 +28,8 @@ class FluidExchange {
   // keep the lightest free body stable on one such spring, its load held between them.
   virtual double boundary_stiffness() const { return 0; }
   // The fluid's force and moment (about the centre of mass) on each body, from its last force
-  // evaluation.
+  // evaluation. Monolithic: what its constraints exerted over the last step, for the output
+  // only (the solve applied it).
   virtual std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const = 0;
 };
 

@@ -114,6 +114,78 @@ ContactMaterial read_material(MapReader& owner, const ContactMaterial& fallback)
   return m;
 }
 
+JointConfig read_joint(MapReader& map, std::size_t index) {
+  JointConfig j;
+  j.line = map.line();
+  j.key = fmt::format("joints[{}]", index);
+  j.name = map.optional<std::string>("name", fmt::format("joint{}", index));
+  const std::string type = map.required<std::string>("type");
+  const std::vector<std::string> types = {"fixed", "revolute", "prismatic", "spherical"};
+  const auto found = std::find(types.begin(), types.end(), type);
+  if (found == types.end()) map.fail_choice("type", "joint type", type, types);
+  j.type = static_cast<JointType>(found - types.begin());
+  if (!map.has("bodies")) map.fail("bodies", "missing required key");
+  const YAML::Node bodies = map.node("bodies");
+  if (!bodies.IsSequence() || bodies.size() != 2 || !bodies[0].IsScalar() ||
+      !bodies[1].IsScalar()) {
+    map.fail("bodies", "must name two bodies, [a, b] (\"world\" for the world)");
+  }
+  j.body_a = bodies[0].as<std::string>();
+  j.body_b = bodies[1].as<std::string>();
+  if (j.body_a == j.body_b) map.fail("bodies", "must name two different bodies");
+  j.anchor = map.required<Vec3>("anchor");
+  // In 2D (the x-z plane) a revolute joint turns about y, which an [x, z] vector cannot give.
+  const bool planar = map.source().dimension == 2;
+  if (planar && j.type == JointType::kRevolute) {
+    if (map.has("axis")) map.fail("axis", "a 2D revolute joint turns about y: give no axis");
+    j.axis = Vec3::UnitY();
+  } else if (j.type == JointType::kRevolute || j.type == JointType::kPrismatic || map.has("axis")) {
+    const Vec3 axis = map.required<Vec3>("axis");
+    if (!(axis.norm() > 0)) map.fail("axis", "must not be zero");
+    j.axis = axis.normalized();
+  }
+  if (map.has("motor")) {
+    if (j.type != JointType::kRevolute) map.fail("motor", "only a revolute joint has a motor");
+    MapReader motor = map.map("motor");
+    j.motor_speed = motor.required<double>("speed");
+    j.motor_torque = motor.optional_positive("torque", j.motor_torque);
+    motor.finish();
+  }
+  map.finish();
+  return j;
+}
+
+void read_velocity_step(MapReader& contact, ContactConfig& c) {
+  if (contact.has("method")) {
+    c.method = contact.optional_choice("method", "penalty", "contact method",
+                                       {"penalty", "complementarity"}) == "penalty"
+                   ? ContactMethod::kPenalty
+                   : ContactMethod::kComplementarity;
+  }
+  if (!contact.has("complementarity")) return;
+  MapReader map = contact.map("complementarity");
+  VelocityStepSettings& s = c.velocity_step;
+  s.solver.solver =
+      map.optional_choice("solver", s.solver.solver, "complementarity solver", ccp_solver_names());
+  s.solver.max_iterations =
+      static_cast<int>(map.optional_positive("max_iterations", s.solver.max_iterations));
+  s.solver.tolerance = map.optional_positive("tolerance", s.solver.tolerance);
+  s.solver.jacobi_relaxation =
+      map.optional_positive("jacobi_relaxation", s.solver.jacobi_relaxation);
+  if (s.solver.jacobi_relaxation > 1) {
+    map.fail("jacobi_relaxation",
+             fmt::format("must not exceed 1, got {}", s.solver.jacobi_relaxation));
+  }
+  s.slip_iterations =
+      static_cast<int>(map.optional_non_negative("slip_iterations", s.slip_iterations));
+  s.recovery_speed = map.optional_positive("recovery_speed", s.recovery_speed);
+  s.stabilisation = map.optional_positive("stabilisation", s.stabilisation);
+  if (s.stabilisation > 1) {
+    map.fail("stabilisation", fmt::format("must not exceed 1, got {}", s.stabilisation));
+  }
+  map.finish();
+}
+
 BodyConfig read_body(MapReader& map, std::size_t index, const std::string& case_file) {
   BodyConfig b;
   b.line = map.line();

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "sluice/io/body_config.hpp"
+#include "sluice/io/case_config.hpp"
 #include "sluice/io/yaml_reader.hpp"
 
 namespace sluice::io {
@@ -11,6 +12,13 @@ namespace sluice::io {
 // Reads one entry of `bodies` (loading its mesh or motion table, whose paths are taken
 // relative to the folder of `case_file`). Throws InputError naming the file, line and key.
 BodyConfig read_body(MapReader& body, std::size_t index, const std::string& case_file);
+
+// Reads one entry of `joints` (docs/case-format.md, "Joints"); its bodies are checked by name
+// when the bodies are built.
+JointConfig read_joint(MapReader& joint, std::size_t index);
+
+// Reads the `contact` mapping's velocity-level step: `method` and `complementarity`.
+void read_velocity_step(MapReader& contact, ContactConfig& config);
 
 // Reads an optional `material` mapping (young, poisson, restitution, friction) over `fallback`.
 ContactMaterial read_material(MapReader& owner, const ContactMaterial& fallback);

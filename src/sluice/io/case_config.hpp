@@ -5,7 +5,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "sluice/geometry/axis_box.hpp"
 #include "sluice/io/body_config.hpp"
 #include "sluice/io/yaml_reader.hpp"
+#include "sluice/rigid/rigid_system.hpp"
 
 namespace sluice::io {
 
@@ -59,10 +62,30 @@ struct ProbeConfig {
 // sub-step is `substep_fraction` of the shortest contact period. Without sub-cycling the fluid
 // itself steps at the solid step whenever a contact is in reach (for comparisons, C6).
 struct ContactConfig {
+  // penalty: the law of `solver`, sub-cycled; complementarity: friction cones of the
+  // velocity-level step (rigid/rigid_system.hpp). Unset: the model's choice (penalty, but for
+  // the granular model).
+  std::optional<ContactMethod> method;
   std::string solver = "penalty";  // a name in shipped_contact_solvers()
   double distance = 0;             // default: the particle spacing
   double substep_fraction = 1.0 / 30;
   bool subcycling = true;
+  VelocityStepSettings velocity_step;  // contact.complementarity: the solver, recovery, joints
+  int line = 0;
+};
+
+// A joint between two bodies named in `bodies` ("world" for the world), at a world anchor,
+// with a world axis (revolute, prismatic), as at the start.
+struct JointConfig {
+  std::string name;
+  JointType type = JointType::kSpherical;
+  std::string body_a, body_b;
+  Vec3 anchor = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();                                      // unit
+  std::optional<double> motor_speed;                              // revolute [rad/s]
+  double motor_torque = std::numeric_limits<double>::infinity();  // [N m]
+  std::string key;                                                // "joints[N]", for messages
+  int line = 0;
 };
 
 struct CaseConfig {
@@ -79,6 +102,7 @@ struct CaseConfig {
   std::vector<WallConfig> walls;
   std::vector<BodyConfig> bodies;
   ContactConfig contact;
+  std::vector<JointConfig> joints;
   double body_interval = 0;  // time between rows of OUT/bodies/NAME.csv
   std::vector<ProbeConfig> probes;
   std::string model_name;

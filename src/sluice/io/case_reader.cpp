@@ -163,6 +163,8 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
       }
     }
   }
+  index = 0;
+  for (auto& joint : top.list_of_maps("joints")) c.joints.push_back(read_joint(joint, index++));
   c.body_interval = top.optional_positive("body_interval", c.probe_interval);
   if (top.has("contact")) {
     MapReader contact = top.map("contact");
@@ -176,6 +178,8 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
                    "must not exceed 0.5 (a sub-step is a fraction of a contact period)");
     }
     c.contact.subcycling = contact.optional<bool>("subcycling", c.contact.subcycling);
+    read_velocity_step(contact, c.contact);
+    c.contact.line = contact.line();
     contact.finish();
   } else {
     c.contact.distance = c.spacing;

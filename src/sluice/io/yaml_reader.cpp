@@ -125,14 +125,19 @@ std::string MapReader::optional_choice(const std::string& key, const std::string
   return value;
 }
 
-void MapReader::fail_choice(const std::string& key, const std::string& what,
-                            const std::string& value,
-                            const std::vector<std::string>& choices) const {
+std::string unknown_choice(const std::string& what, const std::string& value,
+                           const std::vector<std::string>& choices) {
   std::string problem = fmt::format("unknown {} '{}'; expected one of: ", what, value);
   for (std::size_t k = 0; k < choices.size(); ++k) problem += (k ? ", " : "") + choices[k];
   const std::string guess = closest_match(value, choices);
   if (!guess.empty()) problem += fmt::format(" (did you mean '{}'?)", guess);
-  fail(key, problem);
+  return problem;
+}
+
+void MapReader::fail_choice(const std::string& key, const std::string& what,
+                            const std::string& value,
+                            const std::vector<std::string>& choices) const {
+  fail(key, unknown_choice(what, value, choices));
 }
 
 void MapReader::fail(const std::string& key, const std::string& problem) const {

@@ -96,6 +96,10 @@ class MapReader {
 // 1-based line of a node, 0 when the node has no position (made by --set).
 int line_of(const YAML::Node& node);
 
+// "unknown WHAT 'value'; expected one of: a, b, c (did you mean 'a'?)"
+std::string unknown_choice(const std::string& what, const std::string& value,
+                           const std::vector<std::string>& choices);
+
 // Closest of `candidates` to `word` by edit distance, or "" when none is close.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 

@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "sluice/ccp/row_group.hpp"
 #include "sluice/rigid/rigid_body.hpp"
 
 namespace sluice {
@@ -17,7 +18,8 @@ struct SystemBody {
   std::function<void(double time, RigidBody& state)> prescribed;
 };
 
-// Forces between bodies that depend on their states, evaluated at every solid sub-step.
+// Forces between bodies that depend on their states, evaluated at every solid sub-step; or,
+// in the complementarity method, the contacts as rows of the velocity-level step.
 class BodyInteraction {
  public:
   virtual ~BodyInteraction() = default;
@@ -30,6 +32,13 @@ class BodyInteraction {
   virtual double stable_step(const std::vector<SystemBody>& bodies, double dt) = 0;
   // The energy stored in it at the last evaluation (contact springs).
   virtual double stored_energy() const = 0;
+  // The contacts within reach as friction cones for a step of h: each asks its normal
+  // velocity to be at least minus its gap over h (a penetration: to separate at up to
+  // `recovery_speed`). Warm-started from the last call's impulses where a contact lasts.
+  virtual void contact_constraints(const std::vector<SystemBody>& /*bodies*/, double /*h*/,
+                                   double /*recovery_speed*/, RowGroup& /*rows*/) {}
+  // The rows of contact_constraints after the solve, with their impulses.
+  virtual void remember_contact_impulses(const RowGroup& /*rows*/) {}
 };
 
 }  // namespace sluice

@@ -3,10 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sluice/rigid/constraint_solver.hpp"
 #include "sluice/rigid/rigid_integrator.hpp"
 
 namespace sluice {
+
+namespace {
+
+std::uint8_t lock_bits(const RigidBody& body) {
+  std::uint8_t bits = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (body.locked_translation[k]) bits |= std::uint8_t(1 << k);
+    if (body.locked_rotation[k]) bits |= std::uint8_t(1 << (k + 3));
+  }
+  return bits;
+}
+
+}  // namespace
 
 std::size_t RigidSystem::add(SystemBody body) {
   bodies_.push_back(std::move(body));
@@ -22,11 +34,72 @@ void RigidSystem::evaluate_interaction(double dt) {
 }
 
 double RigidSystem::solid_step(double dt) {
+  if (method_ == ContactMethod::kComplementarity) return dt;
   return interaction_ ? interaction_->stable_step(bodies_, dt) : dt;
 }
 
+void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* participant) {
+  problem_.bodies.clear();
+  for (const SystemBody& body : bodies_) {
+    const RigidBody& s = body.state;
+    if (body.fixed) {
+      problem_.bodies.add(s.velocity, s.angular_velocity(), 0, Mat3::Zero(), 0);
+    } else {
+      problem_.bodies.add(s.velocity, s.angular_velocity(), 1 / s.mass, s.inverse_world_inertia(),
+                          lock_bits(s));
+    }
+  }
+  problem_.clear_groups();
+  contact_rows_.clear();
+  if (contacts && interaction_) {
+    interaction_->contact_constraints(bodies_, h, velocity_step_.recovery_speed, contact_rows_);
+    contact_rows_.drop_inert(problem_.bodies);
+    problem_.add(contact_rows_);
+  }
+  // Joint rows come in the same order every step: the last step's impulses start them.
+  std::vector<Real> last;
+  for (const ConstraintRow& row : joint_rows_.rows()) last.push_back(row.impulse);
+  joint_rows_.clear();
+  for (const Joint& joint : joints_) {
+    add_joint_rows(joint, bodies_, h, velocity_step_.stabilisation, joint_rows_);
+  }
+  joint_rows_.drop_inert(problem_.bodies);
+  if (last.size() == joint_rows_.size()) {
+    for (std::size_t k = 0; k < last.size(); ++k) joint_rows_.rows()[k].impulse = last[k];
+  }
+  problem_.add(joint_rows_);
+  if (participant) participant->add_to_problem(problem_, h);
+
+  CcpResult result = solve_ccp(problem_, velocity_step_.solver, velocities_);
+  for (int k = 0; k < velocity_step_.slip_iterations; ++k) {
+    if (contact_rows_.correct_slip(velocities_) <= velocity_step_.solver.tolerance) break;
+    const int before = result.iterations;
+    result = solve_ccp(problem_, velocity_step_.solver, velocities_);
+    result.iterations += before;
+  }
+  ++totals_.solves;
+  totals_.iterations += result.iterations;
+  totals_.most_iterations = std::max(totals_.most_iterations, result.iterations);
+  totals_.residual_sum += result.residual;
+  totals_.largest_residual = std::max(totals_.largest_residual, result.residual);
+  if (contacts && interaction_) interaction_->remember_contact_impulses(contact_rows_);
+
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].fixed) continue;
+    RigidBody& s = bodies_[b].state;
+    s.velocity = velocities_.linear[b];
+    s.angular_momentum = s.world_inertia() * velocities_.angular[b];
+    s.enforce_locks();
+  }
+  if (participant) participant->take_solution(problem_, velocities_, h);
+}
+
 int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
-                         std::vector<ConstraintRow>* rows) {
+                         CcpParticipant* participant) {
+  if (method_ == ContactMethod::kComplementarity) {
+    advance_complementarity(dt, force, torque, participant);
+    return 1;
+  }
   const int substeps = static_cast<int>(std::ceil(dt / solid_step(dt) - 1e-9));
   const double h = dt / substeps;
   const std::size_t n = bodies_.size();
@@ -49,7 +122,7 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::v
     }
     // Velocity constraints act on the velocity the bodies drift with, so that they hold the
     // positions too.
-    if (rows && !rows->empty()) solve_constraints(bodies_, *rows);
+    if (has_velocity_rows(participant)) solve_velocities(h, false, participant);
     for (std::size_t b = 0; b < n; ++b) {
       if (!bodies_[b].fixed) drift(bodies_[b].state, h);
     }
@@ -70,6 +143,38 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::v
   return substeps;
 }
 
+void RigidSystem::advance_complementarity(double h, const std::vector<Vec3>& force,
+                                          const std::vector<Vec3>& torque,
+                                          CcpParticipant* participant) {
+  // Prescribed bodies move to the step's end; the free ones predict their velocities.
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (bodies_[b].prescribed) bodies_[b].prescribed(time_ + h, bodies_[b].state);
+    if (bodies_[b].fixed) continue;
+    Vec3 f = bodies_[b].state.mass * gravity_;
+    if (b < force.size()) f += force[b];
+    kick(bodies_[b].state, f, b < torque.size() ? torque[b] : Vec3::Zero(), h);
+  }
+  solve_velocities(h, true, participant);
+  for (SystemBody& body : bodies_) {
+    if (!body.fixed) drift(body.state, h);
+  }
+  // The contacts' impulses over the step, as forces, for the output.
+  std::fill(interaction_force_.begin(), interaction_force_.end(), Vec3::Zero());
+  std::fill(interaction_torque_.begin(), interaction_torque_.end(), Vec3::Zero());
+  for (const ConstraintRow& r : contact_rows_.rows()) {
+    if (r.a != ConstraintRow::kWorld) {
+      interaction_force_[r.a] += r.impulse / h * r.linear_a;
+      interaction_torque_[r.a] += r.impulse / h * r.angular_a;
+    }
+    if (r.b != ConstraintRow::kWorld) {
+      interaction_force_[r.b] += r.impulse / h * r.linear_b;
+      interaction_torque_[r.b] += r.impulse / h * r.angular_b;
+    }
+  }
+  time_ += h;
+  ++substeps_;
+}
+
 RigidSystemEnergy RigidSystem::energy() const {
   RigidSystemEnergy e;
   for (const SystemBody& body : bodies_) {
@@ -77,7 +182,8 @@ RigidSystemEnergy RigidSystem::energy() const {
     e.kinetic += body.state.kinetic_energy();
     e.potential -= body.state.mass * gravity_.dot(body.state.position);
   }
-  e.elastic = interaction_ ? interaction_->stored_energy() : 0;
+  e.elastic =
+      interaction_ && method_ == ContactMethod::kPenalty ? interaction_->stored_energy() : 0;
   return e;
 }
 

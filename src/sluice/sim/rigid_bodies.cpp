@@ -130,6 +130,9 @@ RigidBodies::RigidBodies(const io::CaseConfig& config)
     }
   }
   const std::size_t n = configs_.size();
+  system_.set_method(config.contact.method.value_or(ContactMethod::kPenalty),
+                     config.contact.velocity_step);
+  add_joints(config);
 
   // The starting layout: inside the domain, and no two bodies overlapping.
   auto fail = [&](std::size_t b, const std::string& key, const std::string& problem) {
@@ -166,6 +169,27 @@ RigidBodies::RigidBodies(const io::CaseConfig& config)
                          names[a], names[b], depth));
       }
     }
+  }
+}
+
+void RigidBodies::add_joints(const io::CaseConfig& config) {
+  auto index_of = [&](const io::JointConfig& j, const std::string& name) {
+    if (name == "world") return ConstraintRow::kWorld;
+    std::vector<std::string> names{"world"};
+    for (std::size_t b = 0; b < configs_.size(); ++b) {
+      if (configs_[b].name == name) return b;
+      names.push_back(configs_[b].name);
+    }
+    throw InputError(config.file(), j.line, j.key + ".bodies",
+                     io::unknown_choice("body", name, names));
+  };
+  for (const io::JointConfig& j : config.joints) {
+    Joint joint = make_joint(j.type, index_of(j, j.body_a), index_of(j, j.body_b), system_.bodies(),
+                             j.anchor, j.axis);
+    joint.name = j.name;
+    joint.motor_speed = j.motor_speed;
+    joint.motor_torque = j.motor_torque;
+    system_.add_joint(joint);
   }
 }
 

@@ -45,6 +45,8 @@ class RigidBodies final : public BodyGeometry {
 
  private:
   bool body_occupies(std::size_t b, const Vec3& x, double clearance) const;
+  // The case's joints, their bodies found by name (throws InputError for an unknown one).
+  void add_joints(const io::CaseConfig& config);
   template <class T>
   std::vector<T> gather(std::vector<T> ContactShape::*member) const;
   // How deep the surface particles of body a lie inside body b (bodies or walls).

@@ -117,6 +117,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.solid_substeps = sim.bodies().substeps();
   summary.most_substeps_per_step = sim.coupler().most_substeps();
   summary.most_exchanges_per_step = sim.coupler().most_exchanges();
+  summary.velocity_steps = sim.bodies().system().rigid().velocity_steps();
   summary.stages = timers.entries();
   summary.fluid_counters = fluid.counters();
   const std::vector<std::string> labels = probes.labels();
@@ -166,6 +167,16 @@ std::string stats_json(const RunSummary& r) {
       text += fmt::format("{}\"{}\": {:.9g}", text.empty() ? "" : ", ", name, value);
     return text;
   };
+  // The velocity-level solves: how many, their iterations and their residuals [m/s].
+  const VelocityStepTotals& v = r.velocity_steps;
+  std::vector<std::pair<std::string, double>> velocity_solves;
+  if (v.solves > 0) {
+    velocity_solves = {{"solves", double(v.solves)},
+                       {"iterations_per_solve", double(v.iterations) / double(v.solves)},
+                       {"most_iterations", double(v.most_iterations)},
+                       {"mean_residual", v.residual_sum / double(v.solves)},
+                       {"largest_residual", v.largest_residual}};
+  }
   const double fluid_rate =
       r.wall_seconds > 0 ? static_cast<double>(r.fluid_particles) * r.steps / r.wall_seconds : 0;
   return fmt::format(
@@ -175,14 +186,15 @@ std::string stats_json(const RunSummary& r) {
       "  \"wall_seconds_per_simulated_second\": {:.6g},\n  \"frames\": {},\n"
       "  \"bodies\": {},\n  \"solid_substeps\": {},\n  \"solid_substeps_per_step\": {:.6g},\n"
       "  \"most_solid_substeps_in_a_step\": {},\n  \"most_body_exchanges_in_a_step\": {},\n"
+      "  \"velocity_solves\": {{{}}},\n"
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
       r.particles, r.fluid_particles, r.steps, r.simulated_time, r.wall_seconds, r.threads,
       r.particle_steps_per_second(), fluid_rate,
       r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0, r.frames, r.bodies,
       r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
-      r.most_substeps_per_step, r.most_exchanges_per_step, json_map(r.fluid_counters),
-      json_map(r.final_probes), stages);
+      r.most_substeps_per_step, r.most_exchanges_per_step, json_map(velocity_solves),
+      json_map(r.fluid_counters), json_map(r.final_probes), stages);
 }
 
 }  // namespace sluice

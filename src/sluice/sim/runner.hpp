@@ -31,7 +31,8 @@ struct RunSummary {
   std::size_t bodies = 0;
   long solid_substeps = 0;  // solid sub-steps over the run (bodies sub-cycle within a step)
   int most_substeps_per_step = 0;
-  int most_exchanges_per_step = 1;  // of the fluid's loads with the bodies (Coupler::exchanges)
+  int most_exchanges_per_step = 1;    // of the fluid's loads with the bodies (Coupler::exchanges)
+  VelocityStepTotals velocity_steps;  // the velocity-level solves (joints, complementarity)
   std::vector<std::pair<std::string, double>> fluid_counters;  // FluidSystem::counters()
   std::vector<std::pair<std::string, double>> final_probes;    // each probe at the end
 

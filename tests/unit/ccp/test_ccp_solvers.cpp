@@ -144,5 +144,98 @@ TEST(CcpSolverComparison, AnUnknownSolverIsAnError) {
   EXPECT_THROW(solve_ccp(p, s, u), std::invalid_argument);
 }
 
+// Rows on bodies (what joints and a monolithic fluid add): a unilateral row stops an approach
+// and lets a separation go, an equality between two bodies keeps their momentum, a row at an
+// offset point turns the body as well as moving it, and a row on a fixed body alone is
+// dropped as inert.
+CcpResult solve_rows(CcpProblem& p, RowGroup& rows, BodyVelocities& u) {
+  rows.drop_inert(p.bodies);
+  p.add(rows);
+  CcpSettings s;
+  s.tolerance = 1e-12;
+  s.max_iterations = 1000;
+  return solve_ccp(p, s, u);
+}
+
+ConstraintRow unilateral_up(std::size_t a) {
+  ConstraintRow r;
+  r.a = a;
+  r.linear_a = Vec3::UnitZ();
+  r.lower = 0;  // it may push up, never pull down
+  return r;
+}
+
+TEST(CcpRows, UnilateralRowStopsAnApproachAndFreesASeparation) {
+  for (const Real vz : {-0.5, 0.5}) {
+    CcpProblem p;
+    p.bodies.add(Vec3(0.3, 0, vz), Vec3::Zero(), 0.5, Mat3::Identity() * 5, 0);
+    RowGroup rows;
+    rows.add_row(unilateral_up(0));
+    BodyVelocities u;
+    solve_rows(p, rows, u);
+    EXPECT_NEAR(u.linear[0].z(), std::max<Real>(vz, 0), 1e-12) << vz;
+    EXPECT_NEAR(u.linear[0].x(), 0.3, 1e-15);  // frictionless: the tangential part is kept
+    EXPECT_NEAR(rows.rows()[0].impulse, vz < 0 ? 1.0 : 0.0, 1e-12);  // m |v_n|
+  }
+}
+
+TEST(CcpRows, EqualityBetweenTwoBodiesKeepsMomentum) {
+  CcpProblem p;
+  p.bodies.add(Vec3(1, 0, 0), Vec3::Zero(), 1.0, Mat3::Identity(), 0);
+  p.bodies.add(Vec3(-1, 0, 0), Vec3::Zero(), 1 / 3.0, Mat3::Identity(), 0);
+  RowGroup rows;
+  ConstraintRow r;
+  r.a = 0;
+  r.b = 1;
+  r.linear_a = Vec3::UnitX();
+  r.linear_b = -Vec3::UnitX();  // v_a,x - v_b,x = 0
+  rows.add_row(r);
+  BodyVelocities u;
+  solve_rows(p, rows, u);
+  EXPECT_NEAR(u.linear[0].x(), -0.5, 1e-12);  // the common velocity
+  EXPECT_NEAR(u.linear[1].x(), -0.5, 1e-12);
+}
+
+TEST(CcpRows, OffsetRowTurnsTheBodyAndFixedBodiesAreInert) {
+  CcpProblem p;
+  p.bodies.add(Vec3(0, 0, -1), Vec3::Zero(), 1.0, Mat3::Identity() * 10, 0);
+  p.bodies.add(Vec3(0, 0, -1), Vec3::Zero(), 0, Mat3::Zero(), 0);  // fixed
+  RowGroup rows;
+  ConstraintRow r = unilateral_up(0);
+  const Vec3 arm(0.1, 0, 0);
+  r.angular_a = arm.cross(Vec3::UnitZ());
+  rows.add_row(r);
+  rows.add_row(unilateral_up(1));
+  BodyVelocities u;
+  solve_rows(p, rows, u);
+  EXPECT_EQ(rows.size(), 1u);  // the fixed body's row is gone
+  EXPECT_NEAR(u.linear[0].z() + u.angular[0].cross(arm).z(), 0, 1e-12);
+  EXPECT_GT(u.linear[0].z(), -1);
+  EXPECT_NE(u.angular[0].norm(), 0);
+  EXPECT_EQ(u.linear[1].z(), -1);
+}
+
+// In a 2D case (the x-z plane) a row out of the plane moves nothing and is dropped.
+TEST(CcpRows, RowsAlongLockedDirectionsAreInert) {
+  CcpProblem p;
+  p.bodies.add(Vec3::Zero(), Vec3::Zero(), 1.0, Mat3::Identity(), kLockPlanar);
+  RowGroup rows;
+  ConstraintRow along_y;
+  along_y.a = 0;
+  along_y.linear_a = Vec3::UnitY();
+  rows.add_row(along_y);
+  ConstraintRow about_x;
+  about_x.a = 0;
+  about_x.angular_a = Vec3::UnitX();
+  rows.add_row(about_x);
+  ConstraintRow along_x;
+  along_x.a = 0;
+  along_x.linear_a = Vec3::UnitX();
+  rows.add_row(along_x);
+  rows.drop_inert(p.bodies);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows.rows()[0].linear_a, Vec3::UnitX());
+}
+
 }  // namespace
 }  // namespace sluice
