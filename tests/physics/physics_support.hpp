@@ -23,4 +23,8 @@ void run_until(Simulation<D>& sim, double end, Observe&& observe) {
   }
 }
 
+// F2: the RMS difference [m] between the 2D dam break's surge front (cases/dam_break_2d.yaml
+// with `overrides`) and Koshizuka & Oka's (1996) over t in [0, 0.70] s.
+double dam_break_front_rms(const std::vector<std::string>& overrides);
+
 }  // namespace sluice::testing

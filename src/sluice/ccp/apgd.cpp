@@ -4,6 +4,10 @@
 // until f falls below its quadratic model at y, the momentum update, a restart of the momentum
 // when the step went uphill, and L relaxed by 0.9 for the next iteration. The best iterate
 // (smallest residual) is returned. Two products with N an iteration.
+// Unlike the paper, the iteration runs in the metric of N's diagonal W (each row's inverse
+// effective mass; one value per cone, so projections are unchanged): steps are W^-1 g / L and
+// the model's quadratic term is L |d|_W^2 / 2. A body a thousand times heavier than the
+// spheres about it (a box floating on a granular pool) then does not slow every row down.
 #include <cmath>
 #include <limits>
 
@@ -15,7 +19,8 @@ namespace sluice {
 CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVelocities& velocities) {
   using namespace ccp_vectors;
   const std::size_t n = problem.size();
-  std::vector<Real> gamma(n), gamma_new(n), y(n), g_y(n), g_new(n), r(n), best(n), scratch, diag(n);
+  std::vector<Real> gamma(n), gamma_new(n), y(n), g_y(n), g_new(n), r(n), best(n), scratch, diag(n),
+      inverse(n);
   CcpResult out;
   if (n == 0) {
     problem.gradient(gamma, g_new, velocities);
@@ -23,21 +28,30 @@ CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVeloc
   }
   problem.diagonal(diag);
   const Real alpha = residual_alpha(diag);
+  // W: the diagonal, where it is positive.
+  exec::Default::for_each_light(n, [&](std::size_t i) {
+    inverse[i] = diag[i] > 0 ? 1 / diag[i] : 1;
+    if (!(diag[i] > 0)) diag[i] = 1;
+  });
   // r = the gradient at gamma = 0; N x = gradient(x) - r.
   std::vector<Real> zero(n, 0);
   problem.gradient(zero, r, velocities);
-  // f(x) = 1/2 x^T (N x + r) + ... = 1/2 x^T (g(x) + r).
+  // f(x) = 1/2 x^T (N x) + r^T x = 1/2 x^T (g(x) + r).
   auto objective = [&](std::span<const Real> x, std::span<const Real> g) {
     return 0.5 * exec::Default::sum_of(n, [&](std::size_t i) { return x[i] * (g[i] + r[i]); });
   };
-  // The Lipschitz constant of the gradient, estimated along the vector of ones (a lower bound
-  // of N's largest eigenvalue; the backtracking raises it where it falls short).
-  std::vector<Real> ones(n, 1);
-  problem.gradient(ones, g_new, velocities);
-  Real lipschitz =
-      std::sqrt(exec::Default::sum_of(
-                    n, [&](std::size_t i) { return (g_new[i] - r[i]) * (g_new[i] - r[i]); }) /
-                Real(n));
+  // The Lipschitz constant of W^-1/2 N W^-1/2, estimated along W^-1/2 1 (a lower bound of
+  // the largest eigenvalue; the backtracking raises it where it falls short).
+  std::vector<Real> probe(n);
+  exec::Default::for_each_light(n, [&](std::size_t i) { probe[i] = std::sqrt(inverse[i]); });
+  problem.gradient(probe, g_new, velocities);
+  Real lipschitz = std::sqrt(exec::Default::sum_of(n,
+                                                   [&](std::size_t i) {
+                                                     const Real v =
+                                                         (g_new[i] - r[i]) * std::sqrt(inverse[i]);
+                                                     return v * v;
+                                                   }) /
+                             Real(n));
   if (!(lipschitz > 0)) lipschitz = 1;
 
   problem.warm_start(gamma);
@@ -49,15 +63,16 @@ CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVeloc
   for (out.iterations = 1; out.iterations <= settings.max_iterations; ++out.iterations) {
     problem.gradient(y, g_y, velocities);
     const Real f_y = objective(y, g_y);
-    Real f_new = 0;
     for (;;) {
-      add_scaled(y, -1 / lipschitz, g_y, gamma_new);
+      const Real step = 1 / lipschitz;
+      exec::Default::for_each_light(
+          n, [&](std::size_t i) { gamma_new[i] = y[i] - step * inverse[i] * g_y[i]; });
       problem.project(gamma_new);
       problem.gradient(gamma_new, g_new, velocities);
-      f_new = objective(gamma_new, g_new);
+      const Real f_new = objective(gamma_new, g_new);
       const Real model = f_y + exec::Default::sum_of(n, [&](std::size_t i) {
                            const Real d = gamma_new[i] - y[i];
-                           return g_y[i] * d + 0.5 * lipschitz * d * d;
+                           return g_y[i] * d + 0.5 * lipschitz * diag[i] * d * d;
                          });
       // Round-off: a step that changes f by less than its last bits is accepted.
       if (f_new <= model + 1e-14 * std::abs(f_y) || lipschitz > 1e300) break;
@@ -78,7 +93,7 @@ CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVeloc
       y = gamma_new;
       theta = 1;
     } else {
-      exec::Default::for_each(
+      exec::Default::for_each_light(
           n, [&](std::size_t i) { y[i] = gamma_new[i] + beta * (gamma_new[i] - gamma[i]); });
       theta = theta_new;
     }

@@ -52,7 +52,8 @@ void CcpProblem::store(std::span<const Real> gamma) {
 Real CcpProblem::residual(std::span<const Real> gamma, std::span<const Real> g, Real alpha,
                           std::vector<Real>& scratch) const {
   scratch.resize(size_);
-  exec::Default::for_each(size_, [&](std::size_t i) { scratch[i] = gamma[i] - alpha * g[i]; });
+  exec::Default::for_each_light(size_,
+                                [&](std::size_t i) { scratch[i] = gamma[i] - alpha * g[i]; });
   project(scratch);
   return exec::Default::max_of(size_,
                                [&](std::size_t i) { return std::abs(gamma[i] - scratch[i]); }) /

@@ -19,7 +19,7 @@ inline Real dot(std::span<const Real> a, std::span<const Real> b) {
 inline void add_scaled(std::span<const Real> a, Real s, std::span<const Real> b,
                        std::vector<Real>& out) {
   out.resize(a.size());
-  exec::Default::for_each(a.size(), [&](std::size_t i) { out[i] = a[i] + s * b[i]; });
+  exec::Default::for_each_light(a.size(), [&](std::size_t i) { out[i] = a[i] + s * b[i]; });
 }
 
 // The largest effective mass's inverse: alpha of the residual is 1e-3 over it.

@@ -33,7 +33,7 @@ CcpResult solve_projected_jacobi(CcpProblem& problem, const CcpSettings& setting
       best = gamma;
     }
     if (residual < settings.tolerance) break;
-    exec::Default::for_each(n, [&](std::size_t i) {
+    exec::Default::for_each_light(n, [&](std::size_t i) {
       if (diag[i] > 0) gamma[i] -= settings.jacobi_relaxation * g[i] / diag[i];
     });
     problem.project(gamma);

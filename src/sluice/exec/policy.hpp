@@ -15,6 +15,9 @@ namespace sluice::exec {
 // Sums are taken over fixed blocks of kSumBlock indices, each block in index order, and the
 // blocks' sums in block order: the same additions whatever the number of threads.
 inline constexpr std::size_t kSumBlock = 4096;
+// Loops shorter than this run on the calling thread: starting the threads costs more (a few
+// microseconds) than the work (the CCP solvers run a dozen short loops an iteration).
+inline constexpr long kParallelFrom = 4096;
 
 // OpenMP threads with a static schedule, so each thread gets a contiguous block of the
 // cell-sorted particles. Maxima and minima do not depend on the order of reduction; sums
@@ -24,6 +27,14 @@ struct OpenMP {
   static void for_each(std::size_t n, Body&& body) {
     const long count = static_cast<long>(n);
 #pragma omp parallel for schedule(static)
+    for (long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+  }
+  // For loops whose body is a few operations (vector arithmetic): threads only from
+  // kParallelFrom indices on.
+  template <class Body>
+  static void for_each_light(std::size_t n, Body&& body) {
+    const long count = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (count >= kParallelFrom)
     for (long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
   }
   // For loops whose cost varies a lot along the index (pair loops: boundary particles far
@@ -39,7 +50,7 @@ struct OpenMP {
   static double max_of(std::size_t n, Value&& value) {
     double result = -std::numeric_limits<double>::infinity();
     const long count = static_cast<long>(n);
-#pragma omp parallel for schedule(static) reduction(max : result)
+#pragma omp parallel for schedule(static) reduction(max : result) if (count >= kParallelFrom)
     for (long i = 0; i < count; ++i) result = std::max(result, value(static_cast<std::size_t>(i)));
     return result;
   }
@@ -76,6 +87,10 @@ struct Serial {
   }
   template <class Body>
   static void for_each_balanced(std::size_t n, Body&& body) {
+    for_each(n, body);
+  }
+  template <class Body>
+  static void for_each_light(std::size_t n, Body&& body) {
     for_each(n, body);
   }
   template <class Value>

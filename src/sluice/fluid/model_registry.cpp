@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "sluice/fluid/body_particles.hpp"
+#include "sluice/fluid/granular/granular_factory.hpp"
+#include "sluice/fluid/granular/granular_parameters.hpp"
 #include "sluice/fluid/mps/mps_factory.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_factory.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
@@ -24,11 +26,10 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
   model.fail_choice("name", "model", config.model_name, names());
 }
 
-io::CaseConfig ModelRegistry::with_model_bodies(io::CaseConfig config) const {
+io::CaseConfig ModelRegistry::prepared(io::CaseConfig config) const {
   if (!config.has_fluid()) return config;
   const auto found = factories_.find(config.model_name);
-  if (found == factories_.end() || !found->second.bodies) return config;
-  for (io::BodyConfig& b : found->second.bodies(config)) config.bodies.push_back(std::move(b));
+  if (found != factories_.end() && found->second.prepare) found->second.prepare(config);
   return config;
 }
 
@@ -37,7 +38,10 @@ ModelRegistry shipped_models() {
   ModelRegistry registry;
   registry.add("wcsph", make_wcsph<D>);
   registry.add("mps", make_mps<D>);
-  registry.add("penalty-sph", make_penalty_sph<D>, free_solid_grains);
+  registry.add("penalty-sph", make_penalty_sph<D>, [](io::CaseConfig& config) {
+    for (io::BodyConfig& b : free_solid_grains(config)) config.bodies.push_back(std::move(b));
+  });
+  registry.add("granular", make_granular<D>, prepare_granular_case);
   return registry;
 }
 

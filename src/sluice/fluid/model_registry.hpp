@@ -18,25 +18,27 @@ namespace sluice {
 using FluidFactory =
     std::function<std::unique_ptr<FluidSystem>(const io::CaseConfig&, const BodyGeometry&)>;
 
-// The bodies a model adds to the case's own (penalty-sph: the grains of its free solid layers).
-using ModelBodies = std::function<std::vector<io::BodyConfig>(const io::CaseConfig&)>;
+// What a model changes in the case before anything is built: bodies it adds to the case's own
+// (penalty-sph: the grains of its free solid layers), the contact method it needs (granular).
+// Throws InputError.
+using CasePreparation = std::function<void(io::CaseConfig&)>;
 
 class ModelRegistry {
  public:
-  void add(const std::string& name, FluidFactory factory, ModelBodies bodies = {}) {
-    factories_[name] = {std::move(factory), std::move(bodies)};
+  void add(const std::string& name, FluidFactory factory, CasePreparation prepare = {}) {
+    factories_[name] = {std::move(factory), std::move(prepare)};
   }
   // The registered names, in alphabetical order.
   std::vector<std::string> names() const;
   // The model the case names (throws InputError naming model.name when none is registered).
   std::unique_ptr<FluidSystem> make(const io::CaseConfig& config, const BodyGeometry& bodies) const;
-  // The case with the bodies its model adds appended to its own (throws InputError).
-  io::CaseConfig with_model_bodies(io::CaseConfig config) const;
+  // The case as its model prepares it (throws InputError).
+  io::CaseConfig prepared(io::CaseConfig config) const;
 
  private:
   struct Entry {
     FluidFactory make;
-    ModelBodies bodies;
+    CasePreparation prepare;
   };
   std::map<std::string, Entry> factories_;
 };

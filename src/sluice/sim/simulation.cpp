@@ -6,13 +6,14 @@ namespace sluice {
 
 template <int D>
 Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& models)
-    : config_(models.with_model_bodies(config)),
+    : config_(models.prepared(config)),
       bodies_(std::make_unique<RigidBodies>(config_)),
       fluid_(make_fluid_system<D>(config_, *bodies_, models)),
       coupler_(bodies_->system(), bodies_->count(), fluid_.get(), config.contact.subcycling) {
   StageList after_bodies;
   fluid_->append_stages(stages_, after_bodies);
-  if (!bodies_->empty()) {
+  // A monolithic fluid (granular) moves in the bodies' solve, with or without bodies.
+  if (!bodies_->empty() || (has_model() && fluid_->scheme() == CouplingScheme::kMonolithic)) {
     stages_.push_back(make_stage<const StepClock>(
         "bodies", [this](const StepClock& c) { coupler_.advance_bodies(c.dt); }));
   }

@@ -53,7 +53,7 @@ TEST(FreeSolidGrains, OneSphereBodyPerSiteOfAFreeLayer) {
 }
 
 TEST(FreeSolidGrains, TheModelAddsThemAfterTheCaseBodies) {
-  const io::CaseConfig config = shipped_models<3>().with_model_bodies(bed_case());
+  const io::CaseConfig config = shipped_models<3>().prepared(bed_case());
   ASSERT_EQ(config.bodies.size(), 5u);
   EXPECT_EQ(config.bodies[0].name, "lid");
   EXPECT_FALSE(config.bodies[0].seen_as_one_particle);
@@ -61,7 +61,7 @@ TEST(FreeSolidGrains, TheModelAddsThemAfterTheCaseBodies) {
   // Another model adds nothing.
   io::CaseConfig wcsph = bed_case();
   wcsph.model_name = "wcsph";
-  EXPECT_EQ(shipped_models<3>().with_model_bodies(wcsph).bodies.size(), 1u);
+  EXPECT_EQ(shipped_models<3>().prepared(wcsph).bodies.size(), 1u);
 }
 
 }  // namespace

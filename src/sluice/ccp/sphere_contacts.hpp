@@ -1,0 +1,88 @@
+// The contacts of a granular fluid's spheres with each other and with the walls (seed 001's
+// fourth method: water as many frictionless spheres): millions of them, each stored compactly
+// (its two bodies, the normal, the two radii along it, the least normal velocity), with one
+// unknown (frictionless), a cone of three (friction, cohesion), or six with rolling resistance
+// (a torque of at most mu_r r n about the tangents and the normal, r the pair's reduced
+// radius, n the normal impulse; the sliding cone is projected first, then the torques are
+// clamped to the new normal impulse, as in Tasora & Anitescu, Meccanica 48, 2013). A sphere's
+// impulses reach it
+// through a list of its own contacts, so that each sphere's velocity change is summed by one
+// thread in a fixed order; the rest runs contact by contact. Impulses carry over to the next
+// step by the spheres' identities: a contact is kept under the smaller identity of its two
+// spheres (a wall's contact under its sphere's) with the other's identity (or the wall's code).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sluice/ccp/constraint_group.hpp"
+
+namespace sluice {
+
+class SphereContacts final : public ConstraintGroup {
+ public:
+  static constexpr std::uint32_t kWorld = 0xFFFFFFFF;
+  // The partner code of a contact with wall w.
+  static constexpr std::uint32_t wall_code(std::uint32_t w) { return 0xFFFF0000u + w; }
+
+  struct Contact {
+    std::uint32_t a = kWorld, b = 0;  // problem bodies; a may be kWorld (a wall)
+    std::uint32_t owner = 0;          // identity it is kept under: the smaller sphere's
+    std::uint32_t partner = 0;        // the other sphere's identity, or a wall's code
+    Vec3 normal = Vec3::UnitZ();      // from a into b
+    Real radius_a = 0, radius_b = 0;  // from each centre to the contact point, along n
+    Real target = 0;                  // the least normal velocity [m/s]
+  };
+
+  // Starts a step: the spheres are bodies [first, first + count) of the problem, each known by
+  // an identity below `identities`; friction mu, cohesion c [N s] and rolling friction mu_r
+  // (needs mu > 0) for every contact.
+  void begin(std::size_t first, std::size_t count, std::size_t identities, Real friction,
+             Real cohesion, Real rolling_friction = 0);
+  // The step's contacts, to fill (in any order that does not depend on the thread count).
+  std::vector<Contact>& contacts() { return contacts_; }
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  // After filling: each sphere's list of contacts, and the last step's impulses where the same
+  // contact lasts.
+  void finish();
+
+  std::size_t rows_per_contact() const {
+    return friction_ > 0 ? (rolling_friction_ > 0 ? 6 : 3) : 1;
+  }
+  // The normal impulse of contact c [N s].
+  Real normal_impulse(std::size_t c) const { return impulse_[c * rows_per_contact()]; }
+
+  std::size_t size() const override { return contacts_.size() * rows_per_contact(); }
+  void row_velocities(const BodyVelocities& u, std::span<Real> out) const override;
+  void apply_impulses(const CcpBodies& bodies, std::span<const Real> gamma,
+                      BodyVelocities& u) const override;
+  void project(std::span<Real> gamma) const override;
+  void diagonal(const CcpBodies& bodies, std::span<Real> out) const override;
+  void warm_start(std::span<Real> gamma) const override;
+  void store(std::span<const Real> gamma) override;
+
+ private:
+  // The last step's impulses, listed by owner identity: [offsets[id], offsets[id + 1]).
+  struct Memory {
+    std::vector<std::uint32_t> offsets, partner;
+    std::vector<Real> impulse;
+  };
+  void remember();
+
+  std::size_t first_ = 0, count_ = 0, identities_ = 0;
+  Real friction_ = 0, cohesion_ = 0, rolling_friction_ = 0;
+  std::vector<Contact> contacts_;
+  std::vector<Real> impulse_;
+  // Each sphere's contacts: 2 c + side (side 0: it is a; 1: it is b), and the direction its
+  // normal impulse pushes it (minus the normal for a), in single precision: the gather of the
+  // frictionless case reads nothing else (a sixth of a contact's record).
+  struct Entry {
+    float push[3];
+    std::uint32_t contact_side;
+  };
+  std::vector<std::uint32_t> list_offsets_;
+  std::vector<Entry> list_;
+  Memory memory_;
+};
+
+}  // namespace sluice

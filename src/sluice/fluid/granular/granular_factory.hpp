@@ -1,0 +1,16 @@
+// Builds the granular model for a case of dimension D.
+#pragma once
+
+#include <memory>
+
+#include "sluice/coupling/body_geometry.hpp"
+#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/io/case_config.hpp"
+
+namespace sluice {
+
+template <int D>
+std::unique_ptr<FluidSystem> make_granular(const io::CaseConfig& config,
+                                           const BodyGeometry& bodies);
+
+}  // namespace sluice
