@@ -100,11 +100,7 @@ CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVeloc
     gamma.swap(gamma_new);
     lipschitz *= 0.9;
   }
-  out.iterations = std::min(out.iterations, settings.max_iterations);
-  out.residual = best_residual;
-  problem.gradient(best, g_new, velocities);
-  problem.store(best);
-  return out;
+  return finish_ccp(problem, best, best_residual, out.iterations, settings, g_new, velocities);
 }
 
 }  // namespace sluice

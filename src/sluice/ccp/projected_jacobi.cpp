@@ -38,11 +38,7 @@ CcpResult solve_projected_jacobi(CcpProblem& problem, const CcpSettings& setting
     });
     problem.project(gamma);
   }
-  out.iterations = std::min(out.iterations, settings.max_iterations);
-  out.residual = best_residual;
-  problem.gradient(best, g, velocities);
-  problem.store(best);
-  return out;
+  return finish_ccp(problem, best, best_residual, out.iterations, settings, g, velocities);
 }
 
 }  // namespace sluice
