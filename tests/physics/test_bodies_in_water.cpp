@@ -86,6 +86,9 @@ TEST(CaseFloatingBox, DraftByArchimedes) {
 TEST(CaseFloatingBox, DraftByArchimedesWithMps) {
   floating_box_draft("mps");
 }
+TEST(CaseFloatingBox, DraftByArchimedesWithConstraintFluid) {
+  floating_box_draft("constraint");
+}
 
 TEST(CaseFallingCube, SinksAndRestsOnTheFloor) {
   Simulation<3> sim(testing::load_case("falling_cube.yaml", {"end_time=0.4"}));

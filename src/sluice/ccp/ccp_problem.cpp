@@ -25,7 +25,9 @@ void CcpProblem::gradient(std::span<const Real> gamma, std::span<Real> g, BodyVe
     groups_[k]->apply_impulses(bodies, gamma.subspan(offsets_[k], groups_[k]->size()), u);
   }
   for (std::size_t k = 0; k < groups_.size(); ++k) {
-    groups_[k]->row_velocities(u, g.subspan(offsets_[k], groups_[k]->size()));
+    const std::span<Real> out = g.subspan(offsets_[k], groups_[k]->size());
+    groups_[k]->row_velocities(u, out);
+    groups_[k]->add_compliance(gamma.subspan(offsets_[k], groups_[k]->size()), out);
   }
 }
 

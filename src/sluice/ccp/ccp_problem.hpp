@@ -1,8 +1,9 @@
 // A cone complementarity problem (CCP), the velocity-level step of contact, friction and joints
 // (Anitescu & Tasora, Comput. Optim. Appl. 47, 2010): impulses gamma, each block in its cone
 // (a contact's friction cone) or within its bounds (a joint row, a motor), minimising
-//   f(gamma) = 1/2 gamma^T N gamma + r^T gamma,  N = D^T M^-1 D,  r = D^T v* - target,
-// where v* are the bodies' velocities predicted without the impulses. Its gradient N gamma + r
+//   f(gamma) = 1/2 gamma^T N gamma + r^T gamma,  N = D^T M^-1 D + E,  r = D^T v* - target,
+// where v* are the bodies' velocities predicted without the impulses and E the diagonal
+// compliance of regularised rows (zero for contacts and joints). Its gradient N gamma + r
 // is the rows' velocities after the impulses less what they ask for; the solution meets every
 // row in the complementarity sense. N is never formed: a product with it is one pass of the
 // groups' impulses onto the bodies and one pass back (matrix-free, as in Mazhar et al. 2015).
@@ -25,7 +26,8 @@ class CcpProblem {
   void clear_groups();
   std::size_t size() const { return size_; }
 
-  // g = D^T u - target for the velocities u = v* + M^-1 D gamma, which it also returns.
+  // g = D^T u + E gamma - target for the velocities u = v* + M^-1 D gamma, which it also
+  // returns (E: the compliance of regularised rows, zero for the others).
   void gradient(std::span<const Real> gamma, std::span<Real> g, BodyVelocities& u) const;
   void project(std::span<Real> gamma) const;
   void diagonal(std::span<Real> out) const;

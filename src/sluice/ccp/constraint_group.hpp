@@ -20,12 +20,15 @@ class ConstraintGroup {
   // out = D^T u - target: each row's velocity for body velocities u, less the velocity the row
   // asks for (the gradient of the problem's objective, in m/s or rad/s).
   virtual void row_velocities(const BodyVelocities& u, std::span<Real> out) const = 0;
+  // out += E gamma for a group of compliant rows (regularised, as a constraint fluid's: the
+  // problem's matrix is then D^T M^-1 D + E, E diagonal); none by default.
+  virtual void add_compliance(std::span<const Real> /*gamma*/, std::span<Real> /*out*/) const {}
   // u += M^-1 D gamma, in an order that does not depend on the number of threads.
   virtual void apply_impulses(const CcpBodies& bodies, std::span<const Real> gamma,
                               BodyVelocities& u) const = 0;
   // gamma onto the group's feasible set, in place.
   virtual void project(std::span<Real> gamma) const = 0;
-  // out = the diagonal of D^T M^-1 D (each row's inverse effective mass; a cone's three rows
+  // out = the diagonal of D^T M^-1 D + E (each row's inverse effective mass; a cone's three rows
   // take the same, so that a step scaled by it keeps the cone's shape).
   virtual void diagonal(const CcpBodies& bodies, std::span<Real> out) const = 0;
   // The impulses to start from (the last step's, where the group knows them), and the

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "sluice/fluid/body_particles.hpp"
+#include "sluice/fluid/constraint/constraint_factory.hpp"
+#include "sluice/fluid/constraint/constraint_parameters.hpp"
 #include "sluice/fluid/granular/granular_factory.hpp"
 #include "sluice/fluid/granular/granular_parameters.hpp"
 #include "sluice/fluid/mps/mps_factory.hpp"
@@ -42,6 +44,7 @@ ModelRegistry shipped_models() {
     for (io::BodyConfig& b : free_solid_grains(config)) config.bodies.push_back(std::move(b));
   });
   registry.add("granular", make_granular<D>, prepare_granular_case);
+  registry.add("constraint", make_constraint<D>, prepare_constraint_case);
   return registry;
 }
 

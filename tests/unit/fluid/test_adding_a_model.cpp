@@ -34,15 +34,15 @@ ModelRegistry with_still_water() {
 
 TEST(AddingAModel, RegisteredNextToTheShippedOnes) {
   const ModelRegistry models = with_still_water();
-  EXPECT_EQ(models.names(),
-            (std::vector<std::string>{"granular", "mps", "penalty-sph", "still_water", "wcsph"}));
+  EXPECT_EQ(models.names(), (std::vector<std::string>{"constraint", "granular", "mps",
+                                                      "penalty-sph", "still_water", "wcsph"}));
   try {
     Simulation<2> sim(still_tank("  name: stil_water\n"), models);
     FAIL() << "an unknown model must be an input error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "expected one of: granular, mps, penalty-sph, still_water, wcsph (did you mean "
-                  "'still_water'?)"),
+    EXPECT_NE(std::string(e.what()).find("expected one of: constraint, granular, mps, penalty-sph, "
+                                         "still_water, wcsph (did you mean "
+                                         "'still_water'?)"),
               std::string::npos)
         << e.what();
   }

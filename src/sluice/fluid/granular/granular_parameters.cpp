@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "sluice/core/errors.hpp"
 #include "sluice/fluid/free_fall_speed.hpp"
+#include "sluice/fluid/monolithic_case.hpp"
 
 namespace sluice {
 
@@ -52,12 +52,8 @@ GranularParameters read_granular_parameters(const io::CaseConfig& config) {
 }
 
 void prepare_granular_case(io::CaseConfig& config) {
-  if (config.contact.method == ContactMethod::kPenalty) {
-    throw InputError(config.file(), config.contact.line, "contact.method",
-                     "the granular model needs contact.method: complementarity (its spheres and "
-                     "the bodies meet in one velocity-level step)");
-  }
-  config.contact.method = ContactMethod::kComplementarity;
+  require_complementarity(config, "granular",
+                          "its spheres and the bodies meet in one velocity-level step");
 }
 
 }  // namespace sluice

@@ -1,0 +1,119 @@
+#include "sluice/fluid/constraint/density_constraints.hpp"
+
+#include <algorithm>
+
+#include "sluice/exec/policy.hpp"
+
+namespace sluice {
+
+void DensityConstraints::begin(std::size_t first, std::size_t fluid_rows, Real inverse_mass,
+                               bool unilateral) {
+  first_ = first;
+  fluid_rows_ = fluid_rows;
+  inverse_mass_ = inverse_mass;
+  unilateral_ = unilateral;
+  offsets_.assign(1, 0);
+  body_offsets_.assign(1, 0);
+  entries_.clear();
+  body_entries_.clear();
+  sigma_.clear();
+  c_.clear();
+}
+
+void DensityConstraints::append(const Block& block) {
+  std::size_t e = 0, b = 0;
+  for (std::size_t r = 0; r < block.c.size(); ++r) {
+    const bool fluid = c_.size() < fluid_rows_;
+    entries_.insert(entries_.end(), block.entries.begin() + std::ptrdiff_t(e),
+                    block.entries.begin() + std::ptrdiff_t(e + block.entry_counts[r]));
+    e += block.entry_counts[r];
+    offsets_.push_back(entries_.size());
+    body_entries_.insert(body_entries_.end(), block.bodies.begin() + std::ptrdiff_t(b),
+                         block.bodies.begin() + std::ptrdiff_t(b + block.body_counts[r]));
+    b += block.body_counts[r];
+    body_offsets_.push_back(body_entries_.size());
+    if (fluid) sigma_.push_back(block.sigma[r]);
+    c_.push_back(block.c[r]);
+  }
+  target_.resize(c_.size(), 0);
+  compliance_.resize(c_.size(), 0);
+  impulse_.resize(c_.size(), 0);
+}
+
+void DensityConstraints::row_velocities(const BodyVelocities& u, std::span<Real> out) const {
+  exec::Default::for_each(size(), [&](std::size_t r) {
+    Real v = 0;
+    if (r < fluid_rows_) v -= sigma_[r].dot(u.linear[first_ + r]);
+    for (std::size_t k = offsets_[r]; k < offsets_[r + 1]; ++k) {
+      const Entry& e = entries_[k];
+      if (e.row < fluid_rows_) v += e.q.dot(u.linear[first_ + e.row]);
+    }
+    for (std::size_t k = body_offsets_[r]; k < body_offsets_[r + 1]; ++k) {
+      const BodyEntry& e = body_entries_[k];
+      v += e.linear.dot(u.linear[e.body]) + e.angular.dot(u.angular[e.body]);
+    }
+    out[r] = v - target_[r];
+  });
+}
+
+void DensityConstraints::add_compliance(std::span<const Real> gamma, std::span<Real> out) const {
+  exec::Default::for_each_light(size(),
+                                [&](std::size_t r) { out[r] += compliance_[r] * gamma[r]; });
+}
+
+void DensityConstraints::apply_impulses(const CcpBodies& bodies, std::span<const Real> gamma,
+                                        BodyVelocities& u) const {
+  // Fluid particle j: its own row's -sigma_j and, from each neighbour row k, -q_jk (= q_kj).
+  exec::Default::for_each(fluid_rows_, [&](std::size_t j) {
+    Vec3 p = -gamma[j] * sigma_[j];
+    for (std::size_t k = offsets_[j]; k < offsets_[j + 1]; ++k)
+      p -= gamma[entries_[k].row] * entries_[k].q;
+    u.linear[first_ + j] += inverse_mass_ * p;
+  });
+  if (body_entries_.empty()) return;
+  std::vector<Vec3> impulse(first_, Vec3::Zero()), moment(first_, Vec3::Zero());
+  for (const BodyEntry& e : body_entries_) {
+    impulse[e.body] += gamma[e.row] * e.linear;
+    moment[e.body] += gamma[e.row] * e.angular;
+  }
+  for (std::size_t b = 0; b < first_; ++b) {
+    if (impulse[b].isZero() && moment[b].isZero()) continue;
+    Vec3 dv, dw;
+    bodies.velocity_change(b, impulse[b], moment[b], dv, dw);
+    u.linear[b] += dv;
+    u.angular[b] += dw;
+  }
+}
+
+void DensityConstraints::project(std::span<Real> gamma) const {
+  if (!unilateral_) return;
+  exec::Default::for_each_light(size(),
+                                [&](std::size_t r) { gamma[r] = std::max<Real>(gamma[r], 0); });
+}
+
+void DensityConstraints::diagonal(const CcpBodies& bodies, std::span<Real> out) const {
+  exec::Default::for_each(size(), [&](std::size_t r) {
+    Real d = r < fluid_rows_ ? sigma_[r].squaredNorm() : 0;
+    for (std::size_t k = offsets_[r]; k < offsets_[r + 1]; ++k) {
+      if (entries_[k].row < fluid_rows_) d += entries_[k].q.squaredNorm();
+    }
+    d *= inverse_mass_;
+    for (std::size_t k = body_offsets_[r]; k < body_offsets_[r + 1]; ++k) {
+      const BodyEntry& e = body_entries_[k];
+      Vec3 dv, dw;
+      bodies.velocity_change(e.body, e.linear, e.angular, dv, dw);
+      d += e.linear.dot(dv) + e.angular.dot(dw);
+    }
+    out[r] = d + compliance_[r];
+  });
+}
+
+void DensityConstraints::warm_start(std::span<Real> gamma) const {
+  std::copy(impulse_.begin(), impulse_.end(), gamma.begin());
+}
+
+void DensityConstraints::store(std::span<const Real> gamma) {
+  std::copy(gamma.begin(), gamma.end(), impulse_.begin());
+}
+
+}  // namespace sluice
