@@ -25,6 +25,7 @@
 #include "sluice/fluid/constraint/constraint_parameters.hpp"
 #include "sluice/fluid/constraint/density_constraints.hpp"
 #include "sluice/fluid/constraint/viscosity_constraints.hpp"
+#include "sluice/fluid/monolithic_case.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
 
@@ -162,10 +163,7 @@ class ConstraintModel final : public ParticleFluid<D> {
   }
 
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
-    std::vector<Wrench> out(motion.size());
-    for (std::size_t b = 0; b < std::min(out.size(), body_load_.size()); ++b)
-      out[b] = body_load_[b];
-    return out;
+    return loads_of_solve(body_load_, motion.size());
   }
 
   std::vector<std::pair<std::string, double>> counters() const override {
@@ -267,10 +265,10 @@ class ConstraintModel final : public ParticleFluid<D> {
         if (r < fluid) errors[k] = std::max(errors[k], ratio - 1);
       }
     });
-    rows_.begin(bodies_->body_count(), fluid, 1 / mass_, p_.unilateral);
+    rows_.begin(fluid, 1 / mass_, p_.unilateral);
     for (const auto& block : blocks_) rows_.append(block);
     if (p_.viscosity > 0) {
-      viscosity_.begin(bodies_->body_count(), fluid, 1 / mass_,
+      viscosity_.begin(fluid, 1 / mass_,
                        D == 2 ? std::vector<int>{0, 2} : std::vector<int>{0, 1, 2});
       auto& entries = viscosity_.entries();
       std::size_t j = 0;

@@ -6,9 +6,7 @@
 
 namespace sluice {
 
-void DensityConstraints::begin(std::size_t first, std::size_t fluid_rows, Real inverse_mass,
-                               bool unilateral) {
-  first_ = first;
+void DensityConstraints::begin(std::size_t fluid_rows, Real inverse_mass, bool unilateral) {
   fluid_rows_ = fluid_rows;
   inverse_mass_ = inverse_mass;
   unilateral_ = unilateral;

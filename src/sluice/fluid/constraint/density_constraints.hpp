@@ -37,9 +37,9 @@ class DensityConstraints final : public ConstraintGroup {
     Vec3 linear, angular;
   };
 
-  // Empties the rows, for fluid rows acting on the problem's bodies from `first` on, each of
-  // inverse mass `inverse_mass`.
-  void begin(std::size_t first, std::size_t fluid_rows, Real inverse_mass, bool unilateral);
+  // Empties the rows, for fluid rows acting on bodies (placed by place()) each of inverse mass
+  // `inverse_mass`.
+  void begin(std::size_t fluid_rows, Real inverse_mass, bool unilateral);
   // Consecutive rows, built apart (by one thread) and appended in order. A row: its
   // neighbours (entries of fluid rows act on its velocity; the others only receive the fluid
   // particle's reaction), sigma (fluid rows: on the particle itself), its Jacobian on bodies,

@@ -6,9 +6,7 @@
 
 namespace sluice {
 
-void ViscosityConstraints::begin(std::size_t first, std::size_t particles, Real inverse_mass,
-                                 std::vector<int> axes) {
-  first_ = first;
+void ViscosityConstraints::begin(std::size_t particles, Real inverse_mass, std::vector<int> axes) {
   particles_ = particles;
   inverse_mass_ = inverse_mass;
   axes_ = std::move(axes);

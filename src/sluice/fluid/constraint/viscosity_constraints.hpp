@@ -24,9 +24,9 @@ class ViscosityConstraints final : public ConstraintGroup {
     Real forward, backward;
   };
 
-  // Rows for `particles` fluid particles (the problem's bodies from `first` on, each of
+  // Rows for `particles` fluid particles (bodies of the problem placed by place(), each of
   // inverse mass `inverse_mass`) along the world axes in `axes` (2D: x and z).
-  void begin(std::size_t first, std::size_t particles, Real inverse_mass, std::vector<int> axes);
+  void begin(std::size_t particles, Real inverse_mass, std::vector<int> axes);
   // Particle i's neighbours with their kernel values (not yet normalised), in order.
   std::vector<Entry>& entries() { return entries_; }
   std::vector<std::size_t>& offsets() { return offsets_; }

@@ -24,6 +24,7 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/granular/granular_parameters.hpp"
 #include "sluice/fluid/granular/sphere_walls.hpp"
+#include "sluice/fluid/monolithic_case.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 
 namespace sluice {
@@ -130,10 +131,7 @@ class GranularModel final : public ParticleFluid<D> {
   }
 
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
-    std::vector<Wrench> out(motion.size());
-    for (std::size_t b = 0; b < std::min(out.size(), body_load_.size()); ++b)
-      out[b] = body_load_[b];
-    return out;
+    return loads_of_solve(body_load_, motion.size());
   }
 
   std::vector<std::pair<std::string, double>> counters() const override {
