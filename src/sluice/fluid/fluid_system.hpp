@@ -44,8 +44,9 @@ class FluidSystem : public FluidExchange {
   // The stable step for the next step, from the state after the last one.
   virtual double next_time_step() const = 0;
 
-  // Output: the fluid as points with named arrays (docs/output.md).
-  virtual io::PolyFrame frame() const = 0;
+  // Output (docs/output.md): the fluid as points with named arrays; a grid model: its free
+  // surface, and its cells with theirs.
+  virtual io::FluidFrame frame() const = 0;
   // Probes: Shepard-averaged pressure at a point; height of the water column above the
   // domain's floor on a vertical gauge at (x, y); the furthest fluid along an axis (0 = x,
   // 1 = y).
@@ -57,7 +58,7 @@ class FluidSystem : public FluidExchange {
   virtual std::optional<std::string> check(const StepClock& clock) const = 0;
   // Keeps the present state as the last good one, and its frame.
   virtual void remember_good(double time) = 0;
-  virtual io::PolyFrame last_good_frame() const = 0;
+  virtual io::FluidFrame last_good_frame() const = 0;
   virtual double last_good_time() const = 0;
 
   virtual FluidSize size() const = 0;

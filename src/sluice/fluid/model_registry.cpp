@@ -7,6 +7,7 @@
 #include "sluice/fluid/constraint/constraint_parameters.hpp"
 #include "sluice/fluid/granular/granular_factory.hpp"
 #include "sluice/fluid/granular/granular_parameters.hpp"
+#include "sluice/fluid/mac/mac_factory.hpp"
 #include "sluice/fluid/mps/mps_factory.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_factory.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
@@ -45,6 +46,7 @@ ModelRegistry shipped_models() {
   });
   registry.add("granular", make_granular<D>, prepare_granular_case);
   registry.add("constraint", make_constraint<D>, prepare_constraint_case);
+  registry.add("mac", make_mac<D>);
   return registry;
 }
 

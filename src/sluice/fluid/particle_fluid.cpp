@@ -44,6 +44,13 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
                                             wall_layers(interaction_radius, config.spacing), 1))
                                       : bodies.surface_points()),
       body_count_(bodies.body_count()) {
+  for (std::size_t w = 0; w < config.walls.size(); ++w) {
+    if (config.walls[w].surface_velocity.norm() > 0) {
+      throw InputError(config.file(), config.walls[w].line,
+                       "walls[" + std::to_string(w) + "].surface_velocity",
+                       "a moving wall surface is honoured by the grid model (mac) alone");
+    }
+  }
   ParticleState<D>& s = state_;
   const Real dx = config.spacing;
   s.spacing = dx;

@@ -44,13 +44,13 @@ class ParticleFluid : public FluidSystem {
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override;
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override;
 
-  io::PolyFrame frame() const override { return frame_of(state_.particles); }
+  io::FluidFrame frame() const override { return {frame_of(state_.particles), {}}; }
   double pressure_at(const Vec3& x) const override;
   double water_height_at(const Vec3& gauge) const override;
   double surge_front(int axis) const override;
   std::optional<std::string> check(const StepClock& clock) const override;
   void remember_good(double time) override;
-  io::PolyFrame last_good_frame() const override { return frame_of(last_good_); }
+  io::FluidFrame last_good_frame() const override { return {frame_of(last_good_), {}}; }
   double last_good_time() const override { return last_good_time_; }
   FluidSize size() const override;
   FluidEnergy energy() const override;  // kinetic, potential and mass of the fluid

@@ -10,9 +10,10 @@
 namespace sluice {
 
 struct SurfacePoint {
-  double distance = 0;          // signed: < 0 inside the solid
-  Vec3 closest = Vec3::Zero();  // on the surface
-  Vec3 normal = Vec3::Zero();   // outward unit normal of the surface at `closest`
+  double distance = 0;           // signed: < 0 inside the solid
+  Vec3 closest = Vec3::Zero();   // on the surface
+  Vec3 normal = Vec3::Zero();    // outward unit normal of the surface at `closest`
+  Vec3 velocity = Vec3::Zero();  // of a wall's moving surface (WallConfig::surface_velocity)
 };
 
 // A box of half extents `half` (an infinite one along an axis given +infinity).

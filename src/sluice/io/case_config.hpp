@@ -45,6 +45,9 @@ struct WallConfig {
   // As a contact body: stiff, and leaving restitution and friction to the body it meets (the
   // pair takes the smaller of the two).
   ContactMaterial material{200e9, 0.3, 1.0, 1.0};
+  // The velocity of the wall's surface, the wall itself staying in place (a belt, or the lid
+  // of a driven cavity); the grid model (mac) alone honours it.
+  Vec3 surface_velocity = Vec3::Zero();
   int line = 0;
 };
 

@@ -65,6 +65,7 @@ WallConfig read_wall(MapReader& wall, const CaseConfig& c, size_t index) {
   } else {
     wall.fail_choice("type", "wall type", type, {"tank", "box", "plane"});
   }
+  w.surface_velocity = wall.optional<Vec3>("surface_velocity", Vec3::Zero());
   w.material = read_material(wall, w.material);
   wall.finish();
   return w;

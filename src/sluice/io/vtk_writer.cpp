@@ -99,16 +99,31 @@ void write_block(AtomicFile& out, const void* data, uint64_t bytes) {
   out.write(data, bytes);
 }
 
-// Block of the Int64 values first, first+1, ..., first+count-1, generated in chunks so a large
-// frame needs no second full-size buffer.
-void write_iota_block(AtomicFile& out, int64_t first, int64_t count) {
+// Block of the Int64 values first, first+step, ..., first+(count-1) step, generated in chunks
+// so a large frame needs no second full-size buffer.
+void write_iota_block(AtomicFile& out, int64_t first, int64_t count, int64_t step = 1) {
   const uint64_t bytes = static_cast<uint64_t>(count) * sizeof(int64_t);
   out.write(&bytes, sizeof bytes);
   std::array<int64_t, 4096> chunk;
   for (int64_t begin = 0; begin < count; begin += static_cast<int64_t>(chunk.size())) {
     const int64_t size = std::min<int64_t>(static_cast<int64_t>(chunk.size()), count - begin);
-    for (int64_t i = 0; i < size; ++i) chunk[i] = first + begin + i;
+    for (int64_t i = 0; i < size; ++i) chunk[i] = first + (begin + i) * step;
     out.write(chunk.data(), static_cast<size_t>(size) * sizeof(int64_t));
+  }
+}
+
+void check_float_arrays(const std::string& path, const std::vector<PointArrayF32>& arrays,
+                        size_t n) {
+  for (const PointArrayF32& array : arrays) {
+    if (array.components < 1) {
+      throw std::invalid_argument(
+          fmt::format("'{}': array '{}' has {} components", path, array.name, array.components));
+    }
+    if (array.values.size() != n * static_cast<size_t>(array.components)) {
+      throw std::invalid_argument(
+          fmt::format("'{}': array '{}' has {} values, expected {} x {} components", path,
+                      array.name, array.values.size(), n, array.components));
+    }
   }
 }
 
@@ -120,15 +135,10 @@ void check_sizes(const std::string& path, const PolyFrame& frame) {
     fail(fmt::format("points has {} values, not a multiple of 3", frame.points.size()));
   }
   const size_t n = frame.points.size() / 3;
-  for (const PointArrayF32& array : frame.float_arrays) {
-    if (array.components < 1) {
-      fail(fmt::format("array '{}' has {} components", array.name, array.components));
-    }
-    if (array.values.size() != n * static_cast<size_t>(array.components)) {
-      fail(fmt::format("array '{}' has {} values, expected {} points x {} components", array.name,
-                       array.values.size(), n, array.components));
-    }
+  if (frame.points_per_cell < 1 || frame.points_per_cell > 3 || n % frame.points_per_cell != 0) {
+    fail(fmt::format("{} points do not make cells of {}", n, frame.points_per_cell));
   }
+  check_float_arrays(path, frame.float_arrays, n);
   for (const PointArrayI32& array : frame.int_arrays) {
     if (array.values.size() != n) {
       fail(
@@ -156,10 +166,11 @@ void write_vtp(const std::string& path, const PolyFrame& frame) {
       "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n"
       "  <PolyData>\n"
-      "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
-      "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+      "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"{}\" "
+      "NumberOfStrips=\"0\" NumberOfPolys=\"{}\">\n"
       "      <PointData>\n",
-      n);
+      n, frame.points_per_cell == 1 ? n : 0, frame.points_per_cell == 2 ? n / 2 : 0,
+      frame.points_per_cell == 3 ? n / 3 : 0);
   for (const PointArrayF32& array : frame.float_arrays) {
     xml += fmt::format(
         "        <DataArray type=\"Float32\" Name=\"{}\" NumberOfComponents=\"{}\" "
@@ -179,19 +190,23 @@ void write_vtp(const std::string& path, const PolyFrame& frame) {
       "      </Points>\n",
       next_offset(n * 3 * sizeof(float)));
   // Separate statements: the order in which function arguments are evaluated is unspecified.
+  const size_t cell_count = n / static_cast<size_t>(frame.points_per_cell);
   const uint64_t connectivity_offset = next_offset(n * sizeof(int64_t));
-  const uint64_t offsets_offset = next_offset(n * sizeof(int64_t));
+  const uint64_t offsets_offset = next_offset(cell_count * sizeof(int64_t));
+  const char* section = frame.points_per_cell == 1   ? "Verts"
+                        : frame.points_per_cell == 2 ? "Lines"
+                                                     : "Polys";
   xml += fmt::format(
-      "      <Verts>\n"
+      "      <{0}>\n"
       "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" "
-      "offset=\"{}\"/>\n"
-      "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"{}\"/>\n"
-      "      </Verts>\n"
+      "offset=\"{1}\"/>\n"
+      "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"{2}\"/>\n"
+      "      </{0}>\n"
       "    </Piece>\n"
       "  </PolyData>\n"
       "  <AppendedData encoding=\"raw\">\n"
       "   _",
-      connectivity_offset, offsets_offset);
+      section, connectivity_offset, offsets_offset);
 
   AtomicFile out(path);
   out.write(xml);
@@ -202,23 +217,66 @@ void write_vtp(const std::string& path, const PolyFrame& frame) {
     write_block(out, array.values.data(), array.values.size() * sizeof(int32_t));
   }
   write_block(out, frame.points.data(), frame.points.size() * sizeof(float));
-  write_iota_block(out, 0, static_cast<int64_t>(n));  // connectivity: vertex i is point i
-  write_iota_block(out, 1, static_cast<int64_t>(n));  // offsets: end of each one-point cell
+  const auto per_cell = static_cast<int64_t>(frame.points_per_cell);
+  write_iota_block(out, 0, static_cast<int64_t>(n));  // connectivity: the points in order
+  write_iota_block(out, per_cell, static_cast<int64_t>(cell_count), per_cell);  // cells' ends
+  out.write("\n  </AppendedData>\n</VTKFile>\n");
+  out.commit();
+}
+
+void write_vti(const std::string& path, const ImageFrame& frame) {
+  size_t n = 1;
+  for (const int c : frame.cells) {
+    if (c < 1) throw std::invalid_argument(fmt::format("write_vti '{}': {} cells", path, c));
+    n *= static_cast<size_t>(c);
+  }
+  check_float_arrays(path, frame.cell_arrays, n);
+  uint64_t offset = 0;
+  std::string xml = fmt::format(
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n"
+      "  <ImageData WholeExtent=\"0 {0} 0 {1} 0 {2}\" Origin=\"{3:.9g} {4:.9g} {5:.9g}\" "
+      "Spacing=\"{6:.9g} {6:.9g} {6:.9g}\">\n"
+      "    <Piece Extent=\"0 {0} 0 {1} 0 {2}\">\n"
+      "      <CellData>\n",
+      frame.cells[0], frame.cells[1] == 1 && frame.cells[2] > 1 ? 0 : frame.cells[1],
+      frame.cells[2], frame.origin[0], frame.origin[1], frame.origin[2], frame.spacing);
+  for (const PointArrayF32& array : frame.cell_arrays) {
+    xml += fmt::format(
+        "        <DataArray type=\"Float32\" Name=\"{}\" NumberOfComponents=\"{}\" "
+        "format=\"appended\" offset=\"{}\"/>\n",
+        xml_escape(array.name), array.components, offset);
+    offset += sizeof(uint64_t) + array.values.size() * sizeof(float);
+  }
+  xml +=
+      "      </CellData>\n"
+      "    </Piece>\n"
+      "  </ImageData>\n"
+      "  <AppendedData encoding=\"raw\">\n"
+      "   _";
+  AtomicFile out(path);
+  out.write(xml);
+  for (const PointArrayF32& array : frame.cell_arrays) {
+    write_block(out, array.values.data(), array.values.size() * sizeof(float));
+  }
   out.write("\n  </AppendedData>\n</VTKFile>\n");
   out.commit();
 }
 
 PvdSeries::PvdSeries(std::string path) : path_(std::move(path)) {}
 
-void PvdSeries::add(double time, const std::string& file_relative_to_pvd) {
-  entries_.emplace_back(time, file_relative_to_pvd);
+void PvdSeries::add(double time, const std::vector<std::string>& files_relative_to_pvd) {
+  entries_.emplace_back(time, files_relative_to_pvd);
   std::string xml =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       "  <Collection>\n";
-  for (const auto& [entry_time, file] : entries_) {
-    xml += fmt::format("    <DataSet timestep=\"{:.9g}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
-                       entry_time, xml_escape(file));
+  for (const auto& [entry_time, files] : entries_) {
+    for (size_t part = 0; part < files.size(); ++part) {
+      xml += fmt::format("    <DataSet timestep=\"{:.9g}\" group=\"\" part=\"{}\" file=\"{}\"/>\n",
+                         entry_time, part, xml_escape(files[part]));
+    }
   }
   xml +=
       "  </Collection>\n"

@@ -18,10 +18,14 @@ FrameOutput::FrameOutput(const std::string& out_dir, const std::string& case_nam
   }
 }
 
-void FrameOutput::write(const io::PolyFrame& frame, double time) {
-  const std::string name = fmt::format("frames/frame_{:06d}.vtp", frame_count_);
-  io::write_vtp(out_dir_ + "/" + name, frame);
-  series_.add(time, name);
+void FrameOutput::write(const io::FluidFrame& frame, double time) {
+  std::vector<std::string> names{fmt::format("frames/frame_{:06d}.vtp", frame_count_)};
+  io::write_vtp(out_dir_ + "/" + names[0], frame.points);
+  if (frame.grid) {
+    names.push_back(fmt::format("frames/grid_{:06d}.vti", frame_count_));
+    io::write_vti(out_dir_ + "/" + names[1], *frame.grid);
+  }
+  series_.add(time, names);
   ++frame_count_;
 }
 

@@ -1,5 +1,5 @@
-// Writes the fluid's frames (OUT/frames/frame_NNNNNN.vtp) and lists them in the ParaView
-// series OUT/CASE.pvd (docs/output.md).
+// Writes the fluid's frames (OUT/frames/frame_NNNNNN.vtp; a grid model's grid beside it as
+// grid_NNNNNN.vti) and lists them in the ParaView series OUT/CASE.pvd (docs/output.md).
 #pragma once
 
 #include <cstdint>
@@ -16,7 +16,7 @@ class FrameOutput {
   FrameOutput(const std::string& out_dir, const std::string& case_name);
 
   // Writes the next frame, for `time`.
-  void write(const io::PolyFrame& frame, double time);
+  void write(const io::FluidFrame& frame, double time);
 
   int frames_written() const { return frame_count_; }
   const std::string& series_path() const { return series_.path(); }

@@ -52,10 +52,15 @@ SurfacePoint RigidBodies::nearest_on_walls(const Vec3& x) const {
   SurfacePoint best;
   best.distance = std::numeric_limits<double>::infinity();
   best.closest = x;
+  const io::WallConfig* current = nullptr;
   auto keep = [&](const SurfacePoint& p) {
-    if (p.distance < best.distance) best = p;
+    if (p.distance < best.distance) {
+      best = p;
+      best.velocity = current->surface_velocity;
+    }
   };
   for (const io::WallConfig& wall : walls_) {
+    current = &wall;
     switch (wall.shape) {
       case io::WallShape::kTank:
         // Each closed side is a plane whose solid lies outside the tank.

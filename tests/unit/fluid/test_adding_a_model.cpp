@@ -34,16 +34,17 @@ ModelRegistry with_still_water() {
 
 TEST(AddingAModel, RegisteredNextToTheShippedOnes) {
   const ModelRegistry models = with_still_water();
-  EXPECT_EQ(models.names(), (std::vector<std::string>{"constraint", "granular", "mps",
+  EXPECT_EQ(models.names(), (std::vector<std::string>{"constraint", "granular", "mac", "mps",
                                                       "penalty-sph", "still_water", "wcsph"}));
   try {
     Simulation<2> sim(still_tank("  name: stil_water\n"), models);
     FAIL() << "an unknown model must be an input error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("expected one of: constraint, granular, mps, penalty-sph, "
-                                         "still_water, wcsph (did you mean "
-                                         "'still_water'?)"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("expected one of: constraint, granular, mac, mps, penalty-sph, "
+                                   "still_water, wcsph (did you mean "
+                                   "'still_water'?)"),
+        std::string::npos)
         << e.what();
   }
   EXPECT_THROW(Simulation<2>(still_tank("  name: still_water\n"), models), InputError);
@@ -79,7 +80,7 @@ TEST(AddingAModel, TheEngineStepsItWithABody) {
   EXPECT_LE(highest, highest_at_start);
 
   // Its own field is in the frame, beside the engine's, and holds the depth.
-  const io::PolyFrame frame = sim.fluid().frame();
+  const io::PolyFrame frame = sim.fluid().frame().points;
   const auto depth = std::find_if(frame.float_arrays.begin(), frame.float_arrays.end(),
                                   [](const io::PointArrayF32& a) { return a.name == "depth"; });
   ASSERT_NE(depth, frame.float_arrays.end());

@@ -1,0 +1,35 @@
+// The free surface as the model carries it: the level set, advected by MacCormack's scheme,
+// corrected by its marker particles (the particle level set) and reinitialised.
+#pragma once
+
+#include <optional>
+
+#include "sluice/fluid/mac/mac_grid.hpp"
+#include "sluice/fluid/mac/particle_level_set.hpp"
+
+namespace sluice {
+
+template <int D>
+class FreeSurface {
+ public:
+  // `phi` at the start; `particles_per_cell` marker particles per cell and sign (0: none);
+  // reinitialisation every `reinitialise_every` steps.
+  FreeSurface(const MacGrid<D>& grid, CellField phi, int particles_per_cell,
+              int reinitialise_every);
+
+  // One step of `dt` in the flow `u`: the level set and the markers carried, then corrected
+  // and reinitialised.
+  void advance(const FaceField<D>& u, Real dt);
+
+  const CellField& phi() const { return phi_; }
+  std::size_t marker_count() const { return markers_ ? markers_->size() : 0; }
+
+ private:
+  MacGrid<D> grid_;
+  CellField phi_;
+  std::optional<ParticleLevelSet<D>> markers_;
+  int reinitialise_every_;
+  long steps_ = 0;
+};
+
+}  // namespace sluice

@@ -1,0 +1,140 @@
+// The staggered marker-and-cell grid (Harlow & Welch 1965): pressure and level set at cell
+// centres, each velocity component on the faces normal to its axis. Index 0 runs fastest.
+// A `Lattice` is any of these arrangements (the cells, or the faces of one axis) with the
+// multilinear sampling that advection and the probes use.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#include "sluice/core/types.hpp"
+
+namespace sluice {
+
+template <int D>
+using GridIndex = std::array<int, D>;
+
+// Points in a regular arrangement: `dims` of them along each axis, `h` apart, the first at
+// `first`.
+template <int D>
+struct Lattice {
+  GridIndex<D> dims{};
+  Vec<D> first = Vec<D>::Zero();
+  Real h = 1;
+
+  std::size_t size() const {
+    std::size_t n = 1;
+    for (int a = 0; a < D; ++a) n *= static_cast<std::size_t>(dims[a]);
+    return n;
+  }
+  std::size_t index(const GridIndex<D>& c) const {
+    std::size_t k = 0;
+    for (int a = D - 1; a >= 0; --a) k = k * static_cast<std::size_t>(dims[a]) + c[a];
+    return k;
+  }
+  GridIndex<D> coordinates(std::size_t k) const {
+    GridIndex<D> c;
+    for (int a = 0; a < D; ++a) {
+      c[a] = static_cast<int>(k % static_cast<std::size_t>(dims[a]));
+      k /= static_cast<std::size_t>(dims[a]);
+    }
+    return c;
+  }
+  bool contains(const GridIndex<D>& c) const {
+    for (int a = 0; a < D; ++a)
+      if (c[a] < 0 || c[a] >= dims[a]) return false;
+    return true;
+  }
+  // Distance between neighbours along `axis` in the storage.
+  std::size_t stride(int axis) const {
+    std::size_t s = 1;
+    for (int a = 0; a < axis; ++a) s *= static_cast<std::size_t>(dims[a]);
+    return s;
+  }
+  Vec<D> position(const GridIndex<D>& c) const {
+    Vec<D> x = first;
+    for (int a = 0; a < D; ++a) x[a] += c[a] * h;
+    return x;
+  }
+
+  // Multilinear interpolation of `values` at x, the point clamped into the lattice grown by
+  // `reach` spacings (beyond the lattice: linear extrapolation); `low` and `high` receive the
+  // smallest and largest of the 2^D values used (MacCormack's clamp).
+  Real sample(const std::vector<Real>& values, const Vec<D>& x, Real* low = nullptr,
+              Real* high = nullptr, Real reach = 0) const {
+    GridIndex<D> base;
+    std::array<Real, D> t;
+    for (int a = 0; a < D; ++a) {
+      const Real s = std::clamp((x[a] - first[a]) / h, -reach, Real(dims[a] - 1) + reach);
+      base[a] = std::clamp(static_cast<int>(std::floor(s)), 0, std::max(dims[a] - 2, 0));
+      t[a] = dims[a] > 1 ? s - base[a] : 0;
+    }
+    Real sum = 0, lo = 1e300, hi = -1e300;
+    for (int corner = 0; corner < (1 << D); ++corner) {
+      GridIndex<D> c = base;
+      Real w = 1;
+      for (int a = 0; a < D; ++a) {
+        const bool up = (corner >> a) & 1;
+        if (up) c[a] = std::min(c[a] + 1, dims[a] - 1);
+        w *= up ? t[a] : 1 - t[a];
+      }
+      const Real v = values[index(c)];
+      sum += w * v;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    if (low != nullptr) *low = lo;
+    if (high != nullptr) *high = hi;
+    return sum;
+  }
+};
+
+template <int D>
+struct MacGrid {
+  GridIndex<D> cells{};
+  Vec<D> origin = Vec<D>::Zero();  // the lower corner of the first cell
+  Real h = 1;                      // the cells' edge
+
+  Lattice<D> cell_lattice() const { return {cells, origin + Vec<D>::Constant(0.5 * h), h}; }
+  // The faces normal to `axis`: one more than the cells along it, on the cells' walls.
+  Lattice<D> face_lattice(int axis) const {
+    Lattice<D> l = cell_lattice();
+    l.dims[axis] += 1;
+    l.first[axis] = origin[axis];
+    return l;
+  }
+  // The cells' corners.
+  Lattice<D> node_lattice() const {
+    Lattice<D> l{cells, origin, h};
+    for (int a = 0; a < D; ++a) l.dims[a] += 1;
+    return l;
+  }
+  std::size_t cell_count() const { return cell_lattice().size(); }
+};
+
+// A value per cell, and one per face of each axis.
+using CellField = std::vector<Real>;
+template <int D>
+using FaceField = std::array<std::vector<Real>, D>;
+
+template <int D>
+FaceField<D> make_face_field(const MacGrid<D>& grid, Real value = 0) {
+  FaceField<D> f;
+  for (int a = 0; a < D; ++a) f[a].assign(grid.face_lattice(a).size(), value);
+  return f;
+}
+
+// The velocity at x from the face components.
+template <int D>
+Vec<D> velocity_at(const MacGrid<D>& grid, const std::type_identity_t<FaceField<D>>& u,
+                   const Vec<D>& x) {
+  Vec<D> v;
+  for (int a = 0; a < D; ++a) v[a] = grid.face_lattice(a).sample(u[a], x);
+  return v;
+}
+
+}  // namespace sluice

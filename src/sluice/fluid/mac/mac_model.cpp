@@ -1,0 +1,376 @@
+#include "sluice/fluid/mac/mac_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sluice/exec/policy.hpp"
+#include "sluice/fluid/mac/advection.hpp"
+#include "sluice/fluid/mac/level_set.hpp"
+#include "sluice/fluid/mac/surface_mesh.hpp"
+#include "sluice/fluid/mac/velocity_extension.hpp"
+
+namespace sluice {
+
+namespace {
+
+// The share of a cell that phi's surface leaves in the water (a smeared step of width h).
+Real water_fraction(Real phi, Real h) {
+  return std::clamp(0.5 - phi / h, 0.0, 1.0);
+}
+
+std::vector<AxisBox> block_boxes(const io::CaseConfig& config) {
+  std::vector<AxisBox> out;
+  for (const auto& b : config.fluid.blocks) out.push_back(b.box);
+  return out;
+}
+
+}  // namespace
+
+template <int D>
+MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& config,
+                      const BodyGeometry& bodies)
+    : p_(parameters),
+      grid_(mac_grid_of<D>(config, parameters)),
+      gravity_(from_3d<D>(config.gravity)),
+      density_(config.fluid.density),
+      viscosity_(config.fluid.kinematic_viscosity),
+      geometry_(bodies),
+      solid_(grid_, bodies),
+      projection_(
+          make_sparse_solver(parameters.solver, {parameters.tolerance, parameters.max_iterations})),
+      surface_(grid_, level_set_of_blocks<D>(grid_, block_boxes(config), config.domain),
+               parameters.particles_per_cell, parameters.reinitialise_every),
+      motion_(bodies.motion()),
+      surface_points_(bodies.surface_points()),
+      surface_normals_(bodies.surface_normals()),
+      surface_areas_(bodies.surface_areas()) {
+  for (const auto& b : config.fluid.blocks) {
+    if (b.velocity.norm() > 0) {
+      throw InputError(config.file(), b.line, "fluid.blocks", "the mac model starts from rest");
+    }
+  }
+  now_.u = make_face_field(grid_);
+  now_.pressure.assign(grid_.cell_count(), 0);
+  for (int a = 0; a < D; ++a) valid_[a].assign(now_.u[a].size(), 0);
+  // The pressure of the water at rest: one projection of gravity over a unit step, the
+  // velocity it leaves discarded.
+  add_forces(1.0);
+  project(1.0);
+  now_.u = make_face_field(grid_);
+  remember_good(0);
+}
+
+template <int D>
+std::string MacModel<D>::describe() const {
+  std::string cells = std::to_string(grid_.cells[0]);
+  for (int a = 1; a < D; ++a) cells += " x " + std::to_string(grid_.cells[a]);
+  return fmt::format(
+      "mac: {} cells of {} m, {} advection, pressure by {} (tolerance {:g}), {} marker "
+      "particles per cell and sign, cfl {}",
+      cells, grid_.h, p_.maccormack ? "MacCormack" : "semi-Lagrangian", p_.solver, p_.tolerance,
+      p_.particles_per_cell, p_.cfl);
+}
+
+template <int D>
+void MacModel<D>::append_stages(StageList&, StageList& after_bodies) {
+  after_bodies.push_back(
+      make_stage<const StepClock>("advect", [this](const StepClock& c) { advect(c.dt); }));
+  after_bodies.push_back(
+      make_stage<const StepClock>("forces", [this](const StepClock& c) { add_forces(c.dt); }));
+  after_bodies.push_back(make_stage<const StepClock>("boundaries", [this](const StepClock&) {
+    if (!motion_.empty()) solid_.place_bodies(geometry_, motion_);
+  }));
+  after_bodies.push_back(
+      make_stage<const StepClock>("projection", [this](const StepClock& c) { project(c.dt); }));
+  after_bodies.push_back(
+      make_stage<const StepClock>("extension", [this](const StepClock&) { extend(); }));
+}
+
+template <int D>
+void MacModel<D>::advect(double dt) {
+  FaceField<D> advected;
+  for (int a = 0; a < D; ++a) {
+    const Lattice<D> faces = grid_.face_lattice(a);
+    advected[a] = p_.maccormack ? advect_maccormack(faces, now_.u[a], grid_, now_.u, dt)
+                                : advect_semi_lagrangian(faces, now_.u[a], grid_, now_.u, dt);
+  }
+  surface_.advance(now_.u, dt);
+  now_.u = std::move(advected);
+}
+
+template <int D>
+void MacModel<D>::add_forces(double dt) {
+  if (viscosity_ > 0) {
+    // Explicit diffusion of each component; beyond the grid's boundary the wall's surface
+    // velocity holds the fluid (no slip, the wall half a cell out).
+    const Real k = viscosity_ * dt / (grid_.h * grid_.h);
+    for (int a = 0; a < D; ++a) {
+      const Lattice<D> faces = grid_.face_lattice(a);
+      const std::vector<Real>& u = now_.u[a];
+      std::vector<Real> out(u.size());
+      exec::Default::for_each(u.size(), [&](std::size_t f) {
+        const GridIndex<D> c = faces.coordinates(f);
+        Real laplacian = 0;
+        for (int b = 0; b < D; ++b) {
+          for (const int side : {-1, 1}) {
+            GridIndex<D> n = c;
+            n[b] += side;
+            if (faces.contains(n)) {
+              laplacian += u[faces.index(n)] - u[f];
+            } else if (b != a) {
+              Vec<D> beyond = faces.position(c);
+              beyond[b] += side * 0.5 * grid_.h;
+              laplacian += 2 * (solid_.wall_velocity_at(beyond)[a] - u[f]);
+            }
+          }
+        }
+        out[f] = u[f] + k * laplacian;
+      });
+      now_.u[a] = std::move(out);
+    }
+  }
+  for (int a = 0; a < D; ++a) {
+    if (gravity_[a] == 0) continue;
+    for (Real& v : now_.u[a]) v += dt * gravity_[a];
+  }
+}
+
+template <int D>
+void MacModel<D>::project(double dt) {
+  last_projection_ = projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_,
+                                         now_.u, now_.pressure, valid_);
+  projections_ += 1;
+  pressure_iterations_ += last_projection_.iterations;
+  if (!last_projection_.converged) unconverged_ += 1;
+  // The pressure carried into the solid cells beside the water, linearly along each axis
+  // where two water cells line up (exact for hydrostatic pressure), so that the bodies' surface
+  // and the probes on a wall sample it.
+  const Lattice<D> cells = grid_.cell_lattice();
+  CellField carried = now_.pressure;
+  exec::Default::for_each(cells.size(), [&](std::size_t k) {
+    if (!solid_.cell_is_solid(k)) return;
+    const GridIndex<D> c = cells.coordinates(k);
+    Real sum = 0;
+    int count = 0;
+    for (int a = 0; a < D; ++a) {
+      for (const int side : {-1, 1}) {
+        GridIndex<D> n1 = c, n2 = c;
+        n1[a] += side;
+        n2[a] += 2 * side;
+        if (!cells.contains(n1) || !is_water(cells.index(n1))) continue;
+        const Real p1 = now_.pressure[cells.index(n1)];
+        const bool line = cells.contains(n2) && is_water(cells.index(n2));
+        sum += line ? 2 * p1 - now_.pressure[cells.index(n2)] : p1;
+        ++count;
+      }
+    }
+    if (count > 0) carried[k] = sum / count;
+  });
+  now_.pressure = std::move(carried);
+}
+
+template <int D>
+void MacModel<D>::extend() {
+  extend_velocity<D>(grid_, surface_.phi(), valid_, now_.u);
+}
+
+template <int D>
+double MacModel<D>::next_time_step() const {
+  Real fastest = 0;
+  for (int a = 0; a < D; ++a) {
+    fastest = std::max(fastest, exec::Default::max_of(now_.u[a].size(), [&](std::size_t f) {
+                         return valid_[a][f] ? std::abs(now_.u[a][f]) : 0.0;
+                       }));
+  }
+  // What gravity adds over a step, after Bridson's "Fluid Simulation for Computer Graphics".
+  fastest += std::sqrt(5 * grid_.h * gravity_.norm());
+  double dt = fastest > 0 ? p_.cfl * grid_.h / fastest : std::numeric_limits<double>::infinity();
+  if (viscosity_ > 0) dt = std::min(dt, 0.9 * grid_.h * grid_.h / (2 * D * viscosity_));
+  if (p_.max_time_step > 0) dt = std::min(dt, p_.max_time_step);
+  return dt;
+}
+
+template <int D>
+void MacModel<D>::receive_body_motion(const std::vector<BodyKinematics>& motion) {
+  motion_ = motion;
+}
+
+template <int D>
+std::vector<Wrench> MacModel<D>::body_loads(const std::vector<BodyKinematics>& motion) const {
+  std::vector<Wrench> loads(motion.size());
+  const Lattice<D> cells = grid_.cell_lattice();
+  for (std::size_t i = 0; i < surface_points_.size(); ++i) {
+    const BodyPoint& point = surface_points_[i];
+    const BodyKinematics& m = motion[point.body];
+    const Vec3 r = m.orientation * point.local;
+    const Vec3 x = m.position + r;
+    const Real pressure = cells.sample(now_.pressure, from_3d<D>(x), nullptr, nullptr, 0.5);
+    const Vec3 force = -pressure * surface_areas_[i] * (m.orientation * surface_normals_[i]);
+    loads[point.body].force += force;
+    loads[point.body].moment += r.cross(force);
+  }
+  return loads;
+}
+
+template <int D>
+double MacModel<D>::pressure_at(const Vec3& x) const {
+  return grid_.cell_lattice().sample(now_.pressure, from_3d<D>(x), nullptr, nullptr, 0.5);
+}
+
+template <int D>
+double MacModel<D>::water_height_at(const Vec3& gauge) const {
+  // The highest crossing of the surface on the vertical through the gauge, phi interpolated
+  // across the columns and linearly between the cell centres.
+  const Lattice<D> cells = grid_.cell_lattice();
+  const int up = D - 1;
+  Vec<D> x = from_3d<D>(gauge);
+  auto phi_at = [&](int k) {
+    x[up] = cells.first[up] + k * grid_.h;
+    return cells.sample(surface_.phi(), x);
+  };
+  const int n = grid_.cells[up];
+  for (int k = n - 1; k >= 0; --k) {
+    const Real below = phi_at(k);
+    if (below >= 0) continue;
+    if (k == n - 1) return n * grid_.h;
+    const Real above = phi_at(k + 1);
+    return (k + 0.5) * grid_.h + grid_.h * below / (below - above);
+  }
+  return 0;
+}
+
+template <int D>
+double MacModel<D>::surge_front(int axis3) const {
+  const int axis = (D == 2 && axis3 == 0) ? 0 : axis3;
+  const Lattice<D> cells = grid_.cell_lattice();
+  return exec::Default::max_of(cells.size(), [&](std::size_t k) {
+    if (!is_water(k)) return -1e300;
+    GridIndex<D> c = cells.coordinates(k);
+    const Real x = cells.position(c)[axis];
+    c[axis] += 1;
+    if (!cells.contains(c)) return x + 0.5 * grid_.h;
+    const CellField& phi = surface_.phi();
+    const Real beyond = phi[cells.index(c)];
+    if (beyond < 0) return x;
+    return x + grid_.h * phi[k] / (phi[k] - beyond);
+  });
+}
+
+template <int D>
+std::optional<std::string> MacModel<D>::check(const StepClock& clock) const {
+  const Lattice<D> cells = grid_.cell_lattice();
+  auto report = [&](const Vec<D>& x, const char* what) {
+    const Vec3 p = to_3d<D>(x);
+    return fmt::format(
+        "the run diverged at step {}, t = {:.6g} s: the cell at ({:.4g}, {:.4g}, "
+        "{:.4g}): {}",
+        clock.step, clock.time, p[0], p[1], p[2], what);
+  };
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (!std::isfinite(surface_.phi()[k]))
+      return report(cells.position(cells.coordinates(k)), "level set not finite");
+    if (!std::isfinite(now_.pressure[k]))
+      return report(cells.position(cells.coordinates(k)), "pressure not finite");
+  }
+  for (int a = 0; a < D; ++a) {
+    const Lattice<D> faces = grid_.face_lattice(a);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (!std::isfinite(now_.u[a][f]))
+        return report(faces.position(faces.coordinates(f)), "velocity not finite");
+    }
+  }
+  return std::nullopt;
+}
+
+template <int D>
+void MacModel<D>::remember_good(double time) {
+  last_good_ = now_;
+  last_good_.phi = surface_.phi();
+  last_good_time_ = time;
+}
+
+template <int D>
+io::FluidFrame MacModel<D>::frame_of(const CellField& phi, const Fields& f) const {
+  io::FluidFrame frame;
+  const std::vector<Vec3> surface = surface_mesh<D>(grid_, phi);
+  frame.points.points_per_cell = D;
+  for (const Vec3& x : surface)
+    for (int a = 0; a < 3; ++a) frame.points.points.push_back(static_cast<float>(x[a]));
+
+  io::ImageFrame grid;
+  const Vec3 origin = to_3d<D>(grid_.origin);
+  for (int a = 0; a < 3; ++a) grid.origin[a] = origin[a];
+  grid.cells = {grid_.cells[0], D == 3 ? grid_.cells[1] : 1, grid_.cells[D - 1]};
+  grid.spacing = grid_.h;
+  const Lattice<D> cells = grid_.cell_lattice();
+  const std::size_t n = cells.size();
+  io::PointArrayF32 pressure{"pressure", 1, {}}, level{"level_set", 1, {}},
+      velocity{"velocity", 3, {}}, solid{"solid", 1, {}};
+  for (std::size_t k = 0; k < n; ++k) {
+    const GridIndex<D> c = cells.coordinates(k);
+    pressure.values.push_back(static_cast<float>(f.pressure[k]));
+    level.values.push_back(static_cast<float>(phi[k]));
+    solid.values.push_back(solid_.cell_is_solid(k) ? 1.0f : 0.0f);
+    const Vec3 v = to_3d<D>(velocity_at(grid_, f.u, cells.position(c)));
+    for (int a = 0; a < 3; ++a) velocity.values.push_back(static_cast<float>(v[a]));
+  }
+  grid.cell_arrays = {std::move(pressure), std::move(level), std::move(velocity), std::move(solid)};
+  frame.grid = std::move(grid);
+  return frame;
+}
+
+template <int D>
+FluidSize MacModel<D>::size() const {
+  FluidSize s;
+  s.elements = grid_.cell_count();
+  for (std::size_t k = 0; k < s.elements; ++k) {
+    if (solid_.cell_is_solid(k)) {
+      ++s.wall;
+    } else if (surface_.phi()[k] < 0) {
+      ++s.fluid;
+    }
+  }
+  return s;
+}
+
+template <int D>
+double MacModel<D>::water_volume() const {
+  const Real cell_volume = std::pow(grid_.h, D);
+  const CellField& phi = surface_.phi();
+  return exec::Default::sum_of(phi.size(), [&](std::size_t k) {
+    return solid_.cell_is_solid(k) ? 0.0 : water_fraction(phi[k], grid_.h) * cell_volume;
+  });
+}
+
+template <int D>
+FluidEnergy MacModel<D>::energy() const {
+  const Lattice<D> cells = grid_.cell_lattice();
+  const Real cell_mass = density_ * std::pow(grid_.h, D);
+  FluidEnergy e;
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (solid_.cell_is_solid(k)) continue;
+    const Real m = cell_mass * water_fraction(surface_.phi()[k], grid_.h);
+    if (m == 0) continue;
+    const Vec<D> x = cells.position(cells.coordinates(k));
+    e.kinetic += 0.5 * m * velocity_at(grid_, now_.u, x).squaredNorm();
+    e.potential -= m * gravity_.dot(x);
+    e.mass += m;
+  }
+  return e;
+}
+
+template <int D>
+std::vector<std::pair<std::string, double>> MacModel<D>::counters() const {
+  return {{"pressure solves", projections_},
+          {"pressure iterations", pressure_iterations_},
+          {"unconverged pressure solves", unconverged_},
+          {"marker particles", static_cast<double>(surface_.marker_count())}};
+}
+
+template class MacModel<2>;
+template class MacModel<3>;
+
+}  // namespace sluice

@@ -1,0 +1,59 @@
+// The pressure projection: the face velocities made divergence-free in the water, with the
+// free surface as a Dirichlet condition p = 0 placed where phi crosses zero between a water
+// and an air cell (the ghost fluid method of Gibou, Fedkiw, Cheng & Kang, JCP 176, 2002), and
+// solids through the open fraction of each face, the solid's velocity filling the rest (the
+// variational approach of Batty, Bertails & Bridson, SIGGRAPH 2007, which Ng, Min & Gibou,
+// JCP 228, 2009 show second order for the cut-cell Poisson problem). The matrix is symmetric
+// positive definite and goes to one of linear/'s solvers.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "sluice/fluid/mac/mac_grid.hpp"
+#include "sluice/fluid/mac/velocity_extension.hpp"
+#include "sluice/linear/sparse_solver.hpp"
+
+namespace sluice {
+
+// What a face of the grid is made of: the fraction of it open to the fluid (0: inside a
+// solid) and the solid's velocity component there.
+template <int D>
+struct SolidFaces {
+  FaceField<D> open;
+  FaceField<D> velocity;
+};
+
+struct ProjectionReport {
+  std::size_t unknowns = 0;
+  int iterations = 0;
+  double relative_residual = 0;
+  bool converged = true;
+};
+
+template <int D>
+class PressureProjection {
+ public:
+  explicit PressureProjection(std::unique_ptr<SparseSolver> solver) : solver_(std::move(solver)) {}
+
+  // Projects `u` over a step `dt` for water of `density`; `pressure` [Pa] receives the
+  // pressure of every water cell (0 elsewhere) and `valid` marks the faces set here (beside
+  // a water cell, or closed by a solid). Water cells are those with phi < 0 and a face open.
+  ProjectionReport project(const MacGrid<D>& grid, const CellField& phi, const SolidFaces<D>& solid,
+                           Real dt, Real density, FaceField<D>& u, CellField& pressure,
+                           FaceMarks<D>& valid);
+
+ private:
+  std::unique_ptr<SparseSolver> solver_;
+  std::vector<int> unknown_;       // per cell: its row, or -1
+  Eigen::VectorXd last_solution_;  // p dt / (rho h) of the last step per cell: warm start
+};
+
+// The fraction of the segment from value a to value b of a level that lies where it is >= 0.
+inline Real positive_fraction(Real a, Real b) {
+  if (a >= 0 && b >= 0) return 1;
+  if (a < 0 && b < 0) return 0;
+  return std::max(a, b) / std::abs(a - b);
+}
+
+}  // namespace sluice
