@@ -36,6 +36,47 @@ void FreeSurface<D>::advance(const FaceField<D>& u, Real dt) {
   }
 }
 
+template <int D>
+void FreeSurface<D>::carry_through(const std::vector<char>& solid) {
+  const Lattice<D> cells = grid_.cell_lattice();
+  std::vector<char> known(solid.size());
+  std::vector<std::size_t> pending;
+  for (std::size_t k = 0; k < solid.size(); ++k) {
+    known[k] = !solid[k];
+    if (solid[k]) pending.push_back(k);
+  }
+  std::vector<std::pair<std::size_t, Real>> layer;
+  while (!pending.empty()) {
+    layer.clear();
+    std::vector<std::size_t> rest;
+    for (const std::size_t k : pending) {
+      const GridIndex<D> c = cells.coordinates(k);
+      Real sum = 0;
+      int count = 0;
+      for (int a = 0; a < D; ++a) {
+        for (const int side : {-1, 1}) {
+          GridIndex<D> n = c;
+          n[a] += side;
+          if (!cells.contains(n) || !known[cells.index(n)]) continue;
+          sum += phi_[cells.index(n)];
+          ++count;
+        }
+      }
+      if (count > 0) {
+        layer.emplace_back(k, sum / count);
+      } else {
+        rest.push_back(k);
+      }
+    }
+    if (layer.empty()) break;  // solid cells with no way out: left as they are
+    for (const auto& [k, value] : layer) {
+      phi_[k] = value;
+      known[k] = 1;
+    }
+    pending = std::move(rest);
+  }
+}
+
 template class FreeSurface<2>;
 template class FreeSurface<3>;
 

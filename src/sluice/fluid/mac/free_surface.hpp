@@ -21,6 +21,12 @@ class FreeSurface {
   // and reinitialised.
   void advance(const FaceField<D>& u, Real dt);
 
+  // Carries the level set through the cells marked `solid` from the cells around them, layer by
+  // layer (each the mean of its neighbours already set), so that the surface runs on through a
+  // body as if it were water: where the body moves away, the water it uncovers is the water its
+  // surroundings say, and the volume is kept.
+  void carry_through(const std::vector<char>& solid);
+
   const CellField& phi() const { return phi_; }
   std::size_t marker_count() const { return markers_ ? markers_->size() : 0; }
 

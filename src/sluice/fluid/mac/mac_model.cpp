@@ -55,6 +55,7 @@ MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& con
   now_.u = make_face_field(grid_);
   now_.pressure.assign(grid_.cell_count(), 0);
   for (int a = 0; a < D; ++a) valid_[a].assign(now_.u[a].size(), 0);
+  surface_.carry_through(solid_.solid_cells());
   // The pressure of the water at rest: one projection of gravity over a unit step, the
   // velocity it leaves discarded.
   add_forces(1.0);
@@ -81,7 +82,9 @@ void MacModel<D>::append_stages(StageList&, StageList& after_bodies) {
   after_bodies.push_back(
       make_stage<const StepClock>("forces", [this](const StepClock& c) { add_forces(c.dt); }));
   after_bodies.push_back(make_stage<const StepClock>("boundaries", [this](const StepClock&) {
-    if (!motion_.empty()) solid_.place_bodies(geometry_, motion_);
+    if (motion_.empty()) return;
+    solid_.place_bodies(geometry_, motion_);
+    surface_.carry_through(solid_.solid_cells());
   }));
   after_bodies.push_back(
       make_stage<const StepClock>("projection", [this](const StepClock& c) { project(c.dt); }));

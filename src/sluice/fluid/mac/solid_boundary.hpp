@@ -25,6 +25,7 @@ class SolidBoundary {
   const std::vector<Real>& node_distance() const { return nodes_; }
   // Whether the centre of a cell lies inside a solid.
   bool cell_is_solid(std::size_t cell) const { return solid_cell_[cell] != 0; }
+  const std::vector<char>& solid_cells() const { return solid_cell_; }
   // The velocity of the solid beyond the grid's boundary at x (a wall's surface velocity).
   Vec<D> wall_velocity_at(const Vec<D>& x) const;
 
