@@ -88,6 +88,9 @@ TEST(CaseFloatingBox, DraftByArchimedesWithMps) {
 TEST(CaseFloatingBox, DraftByArchimedesWithConstraintFluid) {
   floating_box_draft("constraint");
 }
+TEST(CaseFloatingBox, DraftByArchimedesWithMac) {
+  floating_box_draft("mac");
+}
 
 TEST(CaseFallingCube, SinksAndRestsOnTheFloor) {
   Simulation<3> sim(testing::load_case("falling_cube.yaml", {"end_time=0.4"}));

@@ -11,6 +11,15 @@
 
 namespace sluice {
 
+// How a body answers a force and a moment: its inverse mass along each free world axis and
+// its inverse inertia (world), zero along locked motions and for a body that does not answer
+// forces (fixed, prescribed). A fluid that solves for the bodies' velocities with its own
+// pressure needs it.
+struct BodyMobility {
+  Vec3 inverse_mass = Vec3::Zero();  // per world axis
+  Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Zero();
+};
+
 class BodyGeometry {
  public:
   virtual ~BodyGeometry() = default;
@@ -36,6 +45,8 @@ class BodyGeometry {
   // The nearest point of the walls to x: distance < 0 inside a wall's solid, the normal
   // pointing out of the solid (infinite distance when there is no wall).
   virtual SurfacePoint nearest_on_walls(const Vec3& x) const = 0;
+  // Body b's mobility now (immobile unless the bodies say otherwise).
+  virtual BodyMobility mobility(std::size_t /*b*/) const { return {}; }
 };
 
 }  // namespace sluice

@@ -28,6 +28,7 @@ struct FluidEnergy {
 
 // How big the fluid is: its elements (particles or cells) and, of them, the fluid ones.
 struct FluidSize {
+  const char* element_name = "particles";  // what an element is, in messages
   std::size_t elements = 0;
   std::size_t fluid = 0;
   std::size_t wall = 0;

@@ -225,6 +225,19 @@ std::vector<BodyKinematics> RigidBodies::motion() const {
   return out;
 }
 
+BodyMobility RigidBodies::mobility(std::size_t b) const {
+  BodyMobility m;
+  if (configs_[b].motion != io::BodyMotion::kFree) return m;
+  const RigidBody& s = state(b);
+  Eigen::Matrix3d free_rotation = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < 3; ++a) {
+    m.inverse_mass[a] = s.locked_translation[a] ? 0 : 1 / s.mass;
+    free_rotation(a, a) = s.locked_rotation[a] ? 0 : 1;
+  }
+  m.inverse_inertia = free_rotation * s.inverse_world_inertia() * free_rotation;
+  return m;
+}
+
 std::vector<BodyPoint> RigidBodies::points_under_surface(int layers) const {
   std::vector<BodyPoint> out;
   for (std::size_t b = 0; b < count(); ++b) {

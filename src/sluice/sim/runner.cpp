@@ -48,9 +48,9 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.series_path = frames.series_path();
   summary.bodies = sim.bodies().count();
   if (!options.quiet) {
-    fmt::print(stderr, "sluice: {} ({}D): {} particles ({} fluid), {} bodies, {} threads\n  {}\n",
-               config.name, D, summary.particles, summary.fluid_particles, summary.bodies,
-               summary.threads, fluid.describe());
+    fmt::print(stderr, "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n",
+               config.name, D, summary.particles, fluid.size().element_name,
+               summary.fluid_particles, summary.bodies, summary.threads, fluid.describe());
   }
 
   auto& timers = sim.timers();

@@ -122,7 +122,7 @@ double annulus_pressure_error(int n) {
   CellField phi(cells.size());
   for (std::size_t k = 0; k < phi.size(); ++k)
     phi[k] = (cells.position(cells.coordinates(k)) - centre).norm() - r2;
-  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0)};
+  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0), {}};
   for (int a = 0; a < 2; ++a) {
     const Lattice<2> faces = grid.face_lattice(a);
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -140,8 +140,9 @@ double annulus_pressure_error(int n) {
   CellField pressure;
   FaceMarks<2> valid;
   PressureProjection<2> projection(make_sparse_solver("cg_incomplete_cholesky", {1e-12, 5000}));
+  std::vector<ProjectedBody> no_bodies;
   const ProjectionReport report =
-      projection.project(grid, phi, solid, 1.0, 1.0, u, pressure, valid);
+      projection.project(grid, phi, solid, 1.0, 1.0, u, pressure, valid, no_bodies);
   EXPECT_TRUE(report.converged);
   double worst = 0;
   for (std::size_t k = 0; k < cells.size(); ++k) {
@@ -171,7 +172,7 @@ TEST(MacProjection, LeavesNoDivergenceBesideAMovingSolid) {
   const Lattice<2> cells = grid.cell_lattice();
   const Lattice<2> nodes = grid.node_lattice();
   CellField phi(cells.size(), -1.0);  // all water, closed box
-  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0)};
+  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0), {}};
   for (int a = 0; a < 2; ++a) {
     const Lattice<2> faces = grid.face_lattice(a);
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -192,7 +193,8 @@ TEST(MacProjection, LeavesNoDivergenceBesideAMovingSolid) {
   CellField pressure;
   FaceMarks<2> valid;
   PressureProjection<2> projection(make_sparse_solver("cg_incomplete_cholesky", {1e-10, 5000}));
-  projection.project(grid, phi, solid, 0.01, 1000.0, u, pressure, valid);
+  std::vector<ProjectedBody> no_bodies;
+  projection.project(grid, phi, solid, 0.01, 1000.0, u, pressure, valid, no_bodies);
   double worst = 0;
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const GridIndex<2> c = cells.coordinates(k);

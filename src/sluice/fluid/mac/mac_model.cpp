@@ -16,6 +16,9 @@ namespace sluice {
 
 namespace {
 
+// How far into the air [cells] the velocity is extended each step.
+constexpr Real kExtensionBand = 5;
+
 // The share of a cell that phi's surface leaves in the water (a smeared step of width h).
 Real water_fraction(Real phi, Real h) {
   return std::clamp(0.5 - phi / h, 0.0, 1.0);
@@ -34,19 +37,17 @@ MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& con
                       const BodyGeometry& bodies)
     : p_(parameters),
       grid_(mac_grid_of<D>(config, parameters)),
+      solver_(mac_pressure_solver(parameters.solver, grid_.cell_count())),
       gravity_(from_3d<D>(config.gravity)),
       density_(config.fluid.density),
       viscosity_(config.fluid.kinematic_viscosity),
       geometry_(bodies),
       solid_(grid_, bodies),
-      projection_(
-          make_sparse_solver(parameters.solver, {parameters.tolerance, parameters.max_iterations})),
+      projection_(make_sparse_solver(solver_, {parameters.tolerance, parameters.max_iterations})),
       surface_(grid_, level_set_of_blocks<D>(grid_, block_boxes(config), config.domain),
                parameters.particles_per_cell, parameters.reinitialise_every),
       motion_(bodies.motion()),
-      surface_points_(bodies.surface_points()),
-      surface_normals_(bodies.surface_normals()),
-      surface_areas_(bodies.surface_areas()) {
+      loads_(bodies.body_count()) {
   for (const auto& b : config.fluid.blocks) {
     if (b.velocity.norm() > 0) {
       throw InputError(config.file(), b.line, "fluid.blocks", "the mac model starts from rest");
@@ -59,7 +60,7 @@ MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& con
   // The pressure of the water at rest: one projection of gravity over a unit step, the
   // velocity it leaves discarded.
   add_forces(1.0);
-  project(1.0);
+  project(1.0, false);
   now_.u = make_face_field(grid_);
   remember_good(0);
 }
@@ -71,7 +72,7 @@ std::string MacModel<D>::describe() const {
   return fmt::format(
       "mac: {} cells of {} m, {} advection, pressure by {} (tolerance {:g}), {} marker "
       "particles per cell and sign, cfl {}",
-      cells, grid_.h, p_.maccormack ? "MacCormack" : "semi-Lagrangian", p_.solver, p_.tolerance,
+      cells, grid_.h, p_.maccormack ? "MacCormack" : "semi-Lagrangian", solver_, p_.tolerance,
       p_.particles_per_cell, p_.cfl);
 }
 
@@ -142,9 +143,30 @@ void MacModel<D>::add_forces(double dt) {
 }
 
 template <int D>
-void MacModel<D>::project(double dt) {
+void MacModel<D>::project(double dt, bool moving) {
+  std::vector<ProjectedBody> bodies(motion_.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const BodyKinematics& m = motion_[b];
+    bodies[b].centre = m.position;
+    bodies[b].velocity.head<3>() = m.velocity;
+    bodies[b].velocity.tail<3>() = m.angular_velocity;
+    if (!moving) continue;
+    const BodyMobility mobility = geometry_.mobility(b);
+    bodies[b].mobility.topLeftCorner<3, 3>() = mobility.inverse_mass.asDiagonal();
+    bodies[b].mobility.bottomRightCorner<3, 3>() = mobility.inverse_inertia;
+    // The bodies advanced over this step with the pressure's load of the last; the projection
+    // puts this step's in its place.
+    Vec6 last;
+    last.head<3>() = loads_[b].force;
+    last.tail<3>() = loads_[b].moment;
+    bodies[b].velocity -= dt * bodies[b].mobility * last;
+  }
   last_projection_ = projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_,
-                                         now_.u, now_.pressure, valid_);
+                                         now_.u, now_.pressure, valid_, bodies);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    loads_[b].force = bodies[b].load.head<3>();
+    loads_[b].moment = bodies[b].load.tail<3>();
+  }
   projections_ += 1;
   pressure_iterations_ += last_projection_.iterations;
   if (!last_projection_.converged) unconverged_ += 1;
@@ -177,7 +199,8 @@ void MacModel<D>::project(double dt) {
 
 template <int D>
 void MacModel<D>::extend() {
-  extend_velocity<D>(grid_, surface_.phi(), valid_, now_.u);
+  // Advection reaches at most cfl (<= 2) cells and its interpolation one more from the water.
+  extend_velocity<D>(grid_, surface_.phi(), valid_, now_.u, kExtensionBand * grid_.h);
 }
 
 template <int D>
@@ -202,20 +225,8 @@ void MacModel<D>::receive_body_motion(const std::vector<BodyKinematics>& motion)
 }
 
 template <int D>
-std::vector<Wrench> MacModel<D>::body_loads(const std::vector<BodyKinematics>& motion) const {
-  std::vector<Wrench> loads(motion.size());
-  const Lattice<D> cells = grid_.cell_lattice();
-  for (std::size_t i = 0; i < surface_points_.size(); ++i) {
-    const BodyPoint& point = surface_points_[i];
-    const BodyKinematics& m = motion[point.body];
-    const Vec3 r = m.orientation * point.local;
-    const Vec3 x = m.position + r;
-    const Real pressure = cells.sample(now_.pressure, from_3d<D>(x), nullptr, nullptr, 0.5);
-    const Vec3 force = -pressure * surface_areas_[i] * (m.orientation * surface_normals_[i]);
-    loads[point.body].force += force;
-    loads[point.body].moment += r.cross(force);
-  }
-  return loads;
+std::vector<Wrench> MacModel<D>::body_loads(const std::vector<BodyKinematics>&) const {
+  return loads_;
 }
 
 template <int D>
@@ -328,6 +339,7 @@ io::FluidFrame MacModel<D>::frame_of(const CellField& phi, const Fields& f) cons
 template <int D>
 FluidSize MacModel<D>::size() const {
   FluidSize s;
+  s.element_name = "cells";
   s.elements = grid_.cell_count();
   for (std::size_t k = 0; k < s.elements; ++k) {
     if (solid_.cell_is_solid(k)) {

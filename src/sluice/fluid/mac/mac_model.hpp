@@ -62,7 +62,9 @@ class MacModel : public FluidSystem {
 
   void advect(double dt);
   void add_forces(double dt);
-  void project(double dt);
+  // `moving`: the bodies' velocities are unknowns of the projection (with their loads of the
+  // last step taken out of them); else the bodies hold still.
+  void project(double dt, bool moving = true);
   void extend();
   io::FluidFrame frame_of(const CellField& phi, const Fields& f) const;
   bool is_water(std::size_t cell) const {
@@ -71,6 +73,7 @@ class MacModel : public FluidSystem {
 
   MacParameters p_;
   MacGrid<D> grid_;
+  std::string solver_;  // the pressure solver's name, `auto` resolved
   Vec<D> gravity_;
   Real density_;
   Real viscosity_;
@@ -79,9 +82,7 @@ class MacModel : public FluidSystem {
   PressureProjection<D> projection_;
   FreeSurface<D> surface_;
   std::vector<BodyKinematics> motion_;
-  std::vector<BodyPoint> surface_points_;
-  std::vector<Vec3> surface_normals_;
-  std::vector<double> surface_areas_;
+  std::vector<Wrench> loads_;  // the pressure's on each body, from the last projection
   Fields now_;
   FaceMarks<D> valid_;
   Fields last_good_;

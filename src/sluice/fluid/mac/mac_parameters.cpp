@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sluice/linear/sparse_solver.hpp"
@@ -18,7 +19,9 @@ MacParameters read_mac_parameters(const io::CaseConfig& config) {
   p.max_time_step = model.optional_positive("max_time_step", 0);
   p.maccormack = model.optional_choice("advection", "maccormack", "advection scheme",
                                        {"maccormack", "semi_lagrangian"}) == "maccormack";
-  p.solver = model.optional_choice("solver", p.solver, "pressure solver", sparse_solver_names());
+  std::vector<std::string> solvers = sparse_solver_names();
+  solvers.insert(solvers.begin(), "auto");
+  p.solver = model.optional_choice("solver", p.solver, "pressure solver", solvers);
   p.tolerance = model.optional_positive("tolerance", p.tolerance);
   p.max_iterations = static_cast<int>(model.optional_positive("max_iterations", p.max_iterations));
   p.particles_per_cell = static_cast<int>(
@@ -27,6 +30,13 @@ MacParameters read_mac_parameters(const io::CaseConfig& config) {
       static_cast<int>(model.optional_positive("reinitialise_every", p.reinitialise_every));
   model.finish();
   return p;
+}
+
+std::string mac_pressure_solver(const std::string& solver, std::size_t cells) {
+  if (solver != "auto") return solver;
+  const std::vector<std::string> names = sparse_solver_names();
+  const bool amg = std::find(names.begin(), names.end(), "boomeramg") != names.end();
+  return amg && cells >= 1000000 ? "boomeramg" : "cg_diagonal";
 }
 
 template <int D>

@@ -14,8 +14,11 @@ struct MacParameters {
   double cfl = 0.5;          // of a cell the fastest face velocity may cross in a step
   double max_time_step = 0;  // an upper bound on the step [s]; 0 = none
   bool maccormack = true;    // velocity advection: MacCormack, or plain semi-Lagrangian
-  std::string solver = "cg_incomplete_cholesky";  // the pressure solver (linear/)
-  double tolerance = 1e-8;                        // of the pressure solve, |r| / |b|
+  // The pressure solver (linear/); "auto": hypre's BoomerAMG from a million cells on (its
+  // iterations do not grow with the grid), conjugate gradients with the diagonal below (the
+  // faster there; docs/performance.md).
+  std::string solver = "auto";
+  double tolerance = 1e-8;  // of the pressure solve, |r| / |b|
   int max_iterations = 2000;
   // The particle level set (Enright et al. 2002): marker particles per cell of the interface
   // band, each side; 0 turns the correction off.
@@ -26,6 +29,9 @@ struct MacParameters {
 };
 
 MacParameters read_mac_parameters(const io::CaseConfig& config);
+
+// The solver that `auto` stands for on a grid of `cells` cells.
+std::string mac_pressure_solver(const std::string& solver, std::size_t cells);
 
 // The grid over the case's domain at the parameters' cell size. Throws InputError naming
 // model.cell_size when the cells do not fit the domain a whole number of times.

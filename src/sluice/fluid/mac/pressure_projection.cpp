@@ -1,6 +1,9 @@
 #include "sluice/fluid/mac/pressure_projection.hpp"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 
 #include "sluice/exec/policy.hpp"
 
@@ -24,7 +27,8 @@ template <int D>
 ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const CellField& phi,
                                                 const SolidFaces<D>& solid, Real dt, Real density,
                                                 FaceField<D>& u, CellField& pressure,
-                                                FaceMarks<D>& valid) {
+                                                FaceMarks<D>& valid,
+                                                std::vector<ProjectedBody>& bodies) {
   const Lattice<D> cells = grid.cell_lattice();
   const std::size_t n = cells.size();
   std::array<Lattice<D>, D> faces;
@@ -36,6 +40,26 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
     return faces[axis].index(f);
   };
   auto is_water = [&](std::size_t k) { return unknown_[k] >= 0; };
+  // The body whose velocity a face has (or -1), and the face's row of the map from that body's
+  // velocity (linear, angular) to the face's normal velocity.
+  auto body_of = [&](int a, std::size_t f) {
+    const int b = solid.body[a].empty() ? -1 : solid.body[a][f];
+    return b >= 0 && static_cast<std::size_t>(b) < bodies.size() ? b : -1;
+  };
+  auto face_jacobian = [&](int a, std::size_t f, int b) {
+    Vec<D> axis = Vec<D>::Zero();
+    axis[a] = 1;
+    const Vec3 e = to_3d<D>(axis);
+    const Vec3 r = to_3d<D>(faces[a].position(faces[a].coordinates(f))) - bodies[b].centre;
+    Vec6 j;
+    j.head<3>() = e;
+    j.tail<3>() = r.cross(e);
+    return j;
+  };
+  auto solid_velocity = [&](int a, std::size_t f) {
+    const int b = body_of(a, f);
+    return b < 0 ? solid.velocity[a][f] : face_jacobian(a, f, b).dot(bodies[b].velocity);
+  };
 
   unknown_.assign(n, -1);
   int rows = 0;
@@ -53,6 +77,8 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
   entries.reserve(static_cast<std::size_t>(rows) * (2 * D + 1));
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows);
   std::vector<char> touches_air(static_cast<std::size_t>(rows), 0);
+  // G: each row's divergence per unit of each body's velocity.
+  std::vector<Eigen::Triplet<double, int>> coupling;
   for (std::size_t k = 0; k < n; ++k) {
     const int row = unknown_[k];
     if (row < 0) continue;
@@ -63,7 +89,12 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
         const std::size_t f = face_of(c, a, side);
         const Real w = solid.open[a][f];
         const Real sign = side == 1 ? 1 : -1;
-        divergence += sign * (w * u[a][f] + (1 - w) * solid.velocity[a][f]);
+        divergence += sign * (w * u[a][f] + (1 - w) * solid_velocity(a, f));
+        if (const int b = body_of(a, f); b >= 0 && w < 1) {
+          const Vec6 j = face_jacobian(a, f, b);
+          for (int k = 0; k < 6; ++k)
+            if (j[k] != 0) coupling.emplace_back(row, 6 * b + k, sign * (1 - w) * j[k]);
+        }
         if (w <= 0) continue;
         GridIndex<D> nb = c;
         nb[a] += side == 1 ? 1 : -1;
@@ -118,13 +149,46 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
     if (unknown_[k] >= 0) x[unknown_[k]] = warm ? last_solution_[static_cast<Eigen::Index>(k)] : 0;
   ProjectionReport report;
   report.unknowns = static_cast<std::size_t>(rows);
-  if (rows > 0 && rhs.squaredNorm() > 0) {
-    const SolveReport solve = solver_->solve(matrix, rhs, x);
-    report.iterations = solve.iterations;
-    report.relative_residual = solve.relative_residual;
-    report.converged = solve.converged;
-  } else {
-    x.setZero();
+  auto solve = [&](const Eigen::VectorXd& b, Eigen::VectorXd& solution) {
+    if (rows == 0 || b.squaredNorm() == 0) {
+      solution.setZero();
+      return;
+    }
+    const SolveReport r = solver_->solve(matrix, b, solution);
+    report.iterations += r.iterations;
+    report.relative_residual = std::max(report.relative_residual, r.relative_residual);
+    report.converged = report.converged && r.converged;
+  };
+  solve(rhs, x);
+
+  // The bodies: with G and W = rho h^D M^-1, the problem is (A + G W G^T) q = rhs, solved by
+  // the Woodbury identity with one more solve of A per free direction of a body.
+  const auto columns = static_cast<int>(6 * bodies.size());
+  Eigen::SparseMatrix<double> g(rows, columns);
+  g.setFromTriplets(coupling.begin(), coupling.end());
+  const double cell_mass = density * std::pow(grid.h, D);
+  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(columns, columns);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    w.block<6, 6>(6 * b, 6 * b) = cell_mass * bodies[b].mobility;
+  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(rows, columns);
+  bool mobile = false;
+  for (int c = 0; c < columns; ++c) {
+    if (w.col(c).isZero() || g.col(c).squaredNorm() == 0) continue;
+    Eigen::VectorXd column = Eigen::VectorXd(g.col(c)), solution = Eigen::VectorXd::Zero(rows);
+    solve(column, solution);
+    y.col(c) = solution;
+    mobile = true;
+  }
+  if (mobile) {
+    const Eigen::MatrixXd gty = Eigen::MatrixXd(g.transpose() * y);
+    const Eigen::MatrixXd s = Eigen::MatrixXd::Identity(columns, columns) + w * gty;
+    x -= y * s.partialPivLu().solve(w * (g.transpose() * x));
+  }
+  const Eigen::VectorXd impulse = g.transpose() * x;  // per body: G_b^T q
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const Vec6 gq = impulse.segment<6>(6 * b);
+    bodies[b].velocity += cell_mass * bodies[b].mobility * gq;
+    bodies[b].load = (cell_mass / dt) * gq;
   }
 
   // The scaled pressure p dt / (rho h) per cell, 0 outside the water.
@@ -141,7 +205,7 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
     valid[a].assign(faces[a].size(), 0);
     exec::Default::for_each_light(faces[a].size(), [&](std::size_t f) {
       if (solid.open[a][f] <= 0) {
-        u[a][f] = solid.velocity[a][f];
+        u[a][f] = solid_velocity(a, f);
         valid[a][f] = 1;
         return;
       }

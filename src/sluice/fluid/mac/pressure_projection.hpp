@@ -22,6 +22,21 @@ template <int D>
 struct SolidFaces {
   FaceField<D> open;
   FaceField<D> velocity;
+  std::array<std::vector<int>, D> body;  // the body whose velocity a face has, or -1
+};
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+// A body in the projection: its velocity (linear, angular) is an unknown of the pressure
+// problem, so that the pressure that keeps the water divergence-free is the one that also
+// accelerates the body (Batty, Bertails & Bridson 2007): the added mass is in the solve, and a
+// body lighter than the water it moves stays stable.
+struct ProjectedBody {
+  Vec3 centre = Vec3::Zero();    // of mass
+  Mat6 mobility = Mat6::Zero();  // the inverse of its generalised mass (world), 0: immobile
+  Vec6 velocity = Vec6::Zero();  // in: before the pressure's impulse; out: after it
+  Vec6 load = Vec6::Zero();      // out: the pressure's force and moment about `centre`
 };
 
 struct ProjectionReport {
@@ -39,9 +54,11 @@ class PressureProjection {
   // Projects `u` over a step `dt` for water of `density`; `pressure` [Pa] receives the
   // pressure of every water cell (0 elsewhere) and `valid` marks the faces set here (beside
   // a water cell, or closed by a solid). Water cells are those with phi < 0 and a face open.
+  // The faces of `bodies` (solid.body) move with the bodies' velocities, solved for with the
+  // pressure where a body is mobile; each body's load is the pressure's force on it.
   ProjectionReport project(const MacGrid<D>& grid, const CellField& phi, const SolidFaces<D>& solid,
                            Real dt, Real density, FaceField<D>& u, CellField& pressure,
-                           FaceMarks<D>& valid);
+                           FaceMarks<D>& valid, std::vector<ProjectedBody>& bodies);
 
  private:
   std::unique_ptr<SparseSolver> solver_;

@@ -103,6 +103,7 @@ void SolidBoundary<D>::fill_faces(const std::vector<BodyKinematics>& motion) {
     const Lattice<D> faces = grid_.face_lattice(a);
     faces_.open[a].assign(faces.size(), 1);
     faces_.velocity[a].assign(faces.size(), 0);
+    faces_.body[a].assign(faces.size(), -1);
     exec::Default::for_each(faces.size(), [&](std::size_t f) {
       const GridIndex<D> c = faces.coordinates(f);
       const Vec<D> centre = faces.position(c);
@@ -141,6 +142,7 @@ void SolidBoundary<D>::fill_faces(const std::vector<BodyKinematics>& motion) {
       }
       faces_.open[a][f] = open;
       faces_.velocity[a][f] = velocity[a];
+      faces_.body[a][f] = body;
     });
   }
   solid_cell_.assign(cells.size(), 0);

@@ -30,7 +30,7 @@ std::vector<Real> phi_at_faces(const MacGrid<D>& grid, const CellField& phi, int
 
 template <int D>
 void extend_velocity(const MacGrid<D>& grid, const CellField& phi, const FaceMarks<D>& known,
-                     FaceField<D>& u) {
+                     FaceField<D>& u, Real band) {
   for (int axis = 0; axis < D; ++axis) {
     const Lattice<D> faces = grid.face_lattice(axis);
     const std::vector<Real> level = phi_at_faces(grid, phi, axis);
@@ -38,7 +38,7 @@ void extend_velocity(const MacGrid<D>& grid, const CellField& phi, const FaceMar
     std::vector<Real>& v = u[axis];
     for (int round = 0; round < 2; ++round) {
       for_each_sweep<D>(faces, [&](std::size_t k, const GridIndex<D>& c) {
-        if (known[axis][k]) return;
+        if (known[axis][k] || level[k] > band) return;
         Real weight_sum = 0, value_sum = 0, plain_sum = 0;
         int plain_count = 0;
         for (int b = 0; b < D; ++b) {
@@ -79,8 +79,8 @@ void extend_velocity(const MacGrid<D>& grid, const CellField& phi, const FaceMar
 template std::vector<Real> phi_at_faces<2>(const MacGrid<2>&, const CellField&, int);
 template std::vector<Real> phi_at_faces<3>(const MacGrid<3>&, const CellField&, int);
 template void extend_velocity<2>(const MacGrid<2>&, const CellField&, const FaceMarks<2>&,
-                                 FaceField<2>&);
+                                 FaceField<2>&, Real);
 template void extend_velocity<3>(const MacGrid<3>&, const CellField&, const FaceMarks<3>&,
-                                 FaceField<3>&);
+                                 FaceField<3>&, Real);
 
 }  // namespace sluice

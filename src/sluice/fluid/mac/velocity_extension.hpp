@@ -4,6 +4,7 @@
 // the extension velocities of Adalsteinsson & Sethian, JCP 148, 1999).
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "sluice/fluid/mac/mac_grid.hpp"
@@ -14,12 +15,13 @@ namespace sluice {
 template <int D>
 using FaceMarks = std::array<std::vector<char>, D>;
 
-// Fills every face of `u` not marked in `known` from its neighbours nearer the water (smaller
-// phi, phi taken at a face as the mean of its cells'). Faces no known value reaches keep
-// theirs.
+// Fills every face of `u` not marked in `known`, up to `band` [m] from the surface, from its
+// neighbours nearer the water (smaller phi, phi taken at a face as the mean of its cells').
+// Faces farther out, and those no known value reaches, keep theirs: advection never samples
+// farther than a few cells into the air.
 template <int D>
 void extend_velocity(const MacGrid<D>& grid, const CellField& phi, const FaceMarks<D>& known,
-                     FaceField<D>& u);
+                     FaceField<D>& u, Real band = std::numeric_limits<Real>::infinity());
 
 // phi at the faces of `axis`: the mean of the two cells beside each (the one cell on the
 // grid's boundary).
