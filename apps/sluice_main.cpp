@@ -103,9 +103,9 @@ int main(int argc, char** argv) {
     if (check->parsed()) {
       const auto c = sluice::check_case(config);
       fmt::print(
-          "{}: {}D case '{}' is valid\n  particles: {} ({} fluid, {} wall)\n  bodies: {} ({} "
+          "{}: {}D case '{}' is valid\n  {}: {} ({} fluid, {} wall)\n  bodies: {} ({} "
           "particles)\n  first time step: {:.4g} s\n  {}\n",
-          case_path, config.dimension, config.name, c.particles, c.fluid_particles,
+          case_path, config.dimension, config.name, c.element_name, c.particles, c.fluid_particles,
           c.wall_particles, c.bodies, c.body_particles, c.first_time_step, c.model);
       return sluice::kExitOk;
     }

@@ -1,8 +1,11 @@
 #!/usr/bin/python3
 """Checks a ParaView .pvd series written by sluice: every listed .vtp must load in VTK's own
 reader without errors and carry the named point arrays; optionally the last frame's point count.
+A grid model's series (--cells): every .vti must hold N cells with the named cell arrays, and
+every .vtp must be a surface (line segments or triangles covering all its points).
 
 usage: read_frame.py PVD_FILE [--points N | --min-points M] [--arrays velocity,pressure,...]
+       read_frame.py PVD_FILE --cells N [--cell-arrays pressure,level_set,...]
 Prints one summary line and exits 0, or prints the problem and exits 1.
 """
 import argparse
@@ -47,14 +50,15 @@ def read_pvd(path):
     return frames
 
 
-def read_vtp(path):
-    """Loads one .vtp; fails on anything VTK reports as an error, from the reader or its parser."""
+def read_xml(path):
+    """Loads one .vtp or .vti; fails on anything VTK reports as an error, from the reader or its
+    parser."""
     if not os.path.isfile(path):
         raise Problem(f"{path}: listed in the .pvd but missing")
     log = vtk.vtkStringOutputWindow()
     vtk.vtkOutputWindow.SetInstance(log)
     errors = []
-    reader = vtk.vtkXMLPolyDataReader()
+    reader = vtk.vtkXMLImageDataReader() if path.endswith(".vti") else vtk.vtkXMLPolyDataReader()
     reader.AddObserver("ErrorEvent", lambda obj, event: errors.append(event))
     reader.SetFileName(path)
     reader.Update()
@@ -67,20 +71,36 @@ def read_vtp(path):
     return reader.GetOutput()
 
 
-def check_frame(path, data, wanted):
-    n = data.GetNumberOfPoints()
-    if data.GetNumberOfVerts() != n:
-        raise Problem(f"{path}: {data.GetNumberOfVerts()} vertex cells for {n} points")
-    point_data = data.GetPointData()
+def check_arrays(path, data, wanted, n, kind):
     for name in wanted:
-        array = point_data.GetAbstractArray(name)
+        array = data.GetAbstractArray(name)
         if array is None:
-            raise Problem(f"{path}: no point array '{name}'")
+            raise Problem(f"{path}: no {kind} array '{name}'")
         components, expected = array.GetNumberOfComponents(), COMPONENTS.get(name)
         if expected is not None and components != expected:
             raise Problem(f"{path}: '{name}' has {components} components, expected {expected}")
         if array.GetNumberOfTuples() != n:
-            raise Problem(f"{path}: '{name}' has {array.GetNumberOfTuples()} tuples for {n} points")
+            raise Problem(f"{path}: '{name}' has {array.GetNumberOfTuples()} tuples for {n} {kind}s")
+
+
+def check_grid(path, data, cells, wanted):
+    if data.GetNumberOfCells() != cells:
+        raise Problem(f"{path}: {data.GetNumberOfCells()} cells, expected {cells}")
+    check_arrays(path, data.GetCellData(), wanted, cells, "cell")
+
+
+def check_surface(path, data):
+    n = data.GetNumberOfPoints()
+    lines, triangles = data.GetNumberOfLines(), data.GetNumberOfPolys()
+    if data.GetNumberOfVerts() != 0 or 2 * lines + 3 * triangles != n:
+        raise Problem(f"{path}: {lines} lines and {triangles} triangles for {n} points")
+
+
+def check_frame(path, data, wanted):
+    n = data.GetNumberOfPoints()
+    if data.GetNumberOfVerts() != n:
+        raise Problem(f"{path}: {data.GetNumberOfVerts()} vertex cells for {n} points")
+    check_arrays(path, data.GetPointData(), wanted, n, "point")
 
 
 def main():
@@ -89,17 +109,31 @@ def main():
     count = parser.add_mutually_exclusive_group()
     count.add_argument("--points", type=int, help="the last frame has exactly N points")
     count.add_argument("--min-points", type=int, help="the last frame has at least M points")
+    count.add_argument("--cells", type=int, help="a grid model's: every grid has exactly N cells")
     parser.add_argument("--arrays", default="", help="comma-separated point arrays every frame has")
+    parser.add_argument("--cell-arrays", default="", help="comma-separated cell arrays every grid has")
     args = parser.parse_args()
     wanted = [name for name in args.arrays.split(",") if name]
+    wanted_cells = [name for name in args.cell_arrays.split(",") if name]
     # Errors are collected per file (see read_vtp); keep vtkLogger from repeating them on stderr.
     vtk.vtkLogger.SetStderrVerbosity(vtk.vtkLogger.VERBOSITY_OFF)
 
     try:
         frames = read_pvd(args.pvd)
         for _, path in frames:
-            data = read_vtp(path)
-            check_frame(path, data, wanted)
+            if path.endswith(".vti"):
+                check_grid(path, read_xml(path), args.cells, wanted_cells)
+            elif args.cells is not None:
+                check_surface(path, read_xml(path))
+            else:
+                data = read_xml(path)
+                check_frame(path, data, wanted)
+        if args.cells is not None:
+            grids = sum(path.endswith(".vti") for _, path in frames)
+            if grids == 0 or 2 * grids != len(frames):
+                raise Problem(f"{args.pvd}: {grids} grids among {len(frames)} files")
+            print(f"read {grids} grids of {args.cells} cells and their surfaces")
+            return 0
         n, last = data.GetNumberOfPoints(), frames[-1][1]
         if args.points is not None and n != args.points:
             raise Problem(f"{last}: last frame has {n} points, expected {args.points}")

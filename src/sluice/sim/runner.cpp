@@ -132,6 +132,7 @@ CheckSummary check(const io::CaseConfig& config) {
   Simulation<D> sim(config);
   const FluidSize size = sim.fluid().size();
   CheckSummary out;
+  out.element_name = size.element_name;
   out.particles = size.elements;
   out.fluid_particles = size.fluid;
   out.body_particles = size.body;

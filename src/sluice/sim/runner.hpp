@@ -46,6 +46,7 @@ struct RunSummary {
 RunSummary run_case(const io::CaseConfig& config, const RunOptions& options);
 
 struct CheckSummary {
+  std::string element_name = "particles";  // what `particles` counts: particles or cells
   std::size_t particles = 0;
   std::size_t fluid_particles = 0;
   std::size_t wall_particles = 0;
