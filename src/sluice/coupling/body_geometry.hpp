@@ -12,11 +12,11 @@
 namespace sluice {
 
 // How a body answers a force and a moment: its inverse mass along each free world axis and
-// its inverse inertia (world), zero along locked motions and for a body that does not answer
-// forces (fixed, prescribed). A fluid that solves for the bodies' velocities with its own
-// pressure needs it.
+// its inverse inertia (world), zero along locked motions, for a body held by a contact, and
+// for a body that does not answer forces (fixed, prescribed). A fluid that solves for the
+// bodies' velocities with its own pressure needs it.
 struct BodyMobility {
-  Vec3 inverse_mass = Vec3::Zero();  // per world axis
+  Eigen::Matrix3d inverse_mass = Eigen::Matrix3d::Zero();  // (world)
   Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Zero();
 };
 

@@ -231,10 +231,15 @@ BodyMobility RigidBodies::mobility(std::size_t b) const {
   const RigidBody& s = state(b);
   Eigen::Matrix3d free_rotation = Eigen::Matrix3d::Zero();
   for (int a = 0; a < 3; ++a) {
-    m.inverse_mass[a] = s.locked_translation[a] ? 0 : 1 / s.mass;
+    m.inverse_mass(a, a) = s.locked_translation[a] ? 0 : 1 / s.mass;
     free_rotation(a, a) = s.locked_rotation[a] ? 0 : 1;
   }
   m.inverse_inertia = free_rotation * s.inverse_world_inertia() * free_rotation;
+  // A body in contact answers through the contact as much as through its own mass: a fluid
+  // that solved for its velocity without the contact would move it into what holds it, and
+  // the contact's answer, a step late, would pump energy into the water (two boxes landing on
+  // each other: 50 J). Held by a contact, a body is immobile to the fluid for that step.
+  if (system_.contact_force()[b].norm() > 0) return {};
   return m;
 }
 

@@ -152,7 +152,7 @@ void MacModel<D>::project(double dt, bool moving) {
     bodies[b].velocity.tail<3>() = m.angular_velocity;
     if (!moving) continue;
     const BodyMobility mobility = geometry_.mobility(b);
-    bodies[b].mobility.topLeftCorner<3, 3>() = mobility.inverse_mass.asDiagonal();
+    bodies[b].mobility.topLeftCorner<3, 3>() = mobility.inverse_mass;
     bodies[b].mobility.bottomRightCorner<3, 3>() = mobility.inverse_inertia;
     // The bodies advanced over this step with the pressure's load of the last; the projection
     // puts this step's in its place.
