@@ -56,7 +56,7 @@ TEST(CaseHertzImpact, ContactTimeAndPeakOverlap) {
 // The draft follows from the water's area (conserved) and the box's height: with water level h,
 // 3 h = A + 1 d and d = h - (z - 0.5). The mean is taken over the last two heave periods.
 // B1 with a model: the mean draft over the last 4 s of the 6 s run.
-void floating_box_draft(const std::string& model) {
+void floating_box_draft(const std::string& model, double drift_bar = 0.01) {
   Simulation<2> sim(testing::load_case("floating_box_2d.yaml", {"model.name=" + model}));
   const double area = sim.fluid().energy().mass / sim.config().fluid.density;
   const double x0 = sim.bodies().state(0).position[0];
@@ -76,7 +76,7 @@ void floating_box_draft(const std::string& model) {
       "B1 (case, %s): mean draft %.4f m (Archimedes 0.70, %.2f %%), sideways drift %.3g mm\n",
       model.c_str(), draft, 100 * (draft - 0.7) / 0.7, 1e3 * drift);
   EXPECT_NEAR(draft, 0.7, 0.03 * 0.7);
-  EXPECT_LT(drift, 0.01);
+  EXPECT_LT(drift, drift_bar);
 }
 
 TEST(CaseFloatingBox, DraftByArchimedes) {
@@ -88,8 +88,12 @@ TEST(CaseFloatingBox, DraftByArchimedesWithMps) {
 TEST(CaseFloatingBox, DraftByArchimedesWithConstraintFluid) {
   floating_box_draft("constraint");
 }
+// The grid model's box wanders sideways by more than a particle model's, and differently with
+// the rounding (3.7 mm in the release build, 6.3 mm in the baseline one): the fast sweeping of
+// its level set and velocity extension is not mirror-symmetric. Its bar is 3 cm, under a
+// cell (5 cm), and 9 times the spread between the builds away.
 TEST(CaseFloatingBox, DraftByArchimedesWithMac) {
-  floating_box_draft("mac");
+  floating_box_draft("mac", 0.03);
 }
 
 TEST(CaseFallingCube, SinksAndRestsOnTheFloor) {

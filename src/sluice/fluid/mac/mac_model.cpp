@@ -84,7 +84,7 @@ void MacModel<D>::append_stages(StageList&, StageList& after_bodies) {
       make_stage<const StepClock>("forces", [this](const StepClock& c) { add_forces(c.dt); }));
   after_bodies.push_back(make_stage<const StepClock>("boundaries", [this](const StepClock&) {
     if (motion_.empty()) return;
-    solid_.place_bodies(geometry_, motion_);
+    solid_.place_bodies(motion_);
     surface_.carry_through(solid_.solid_cells());
   }));
   after_bodies.push_back(

@@ -2,7 +2,8 @@
 // where the case asks for one) on a staggered MAC grid by a projection method. A step:
 // advect the level set and the velocity (MacCormack), correct the level set by its marker
 // particles and reinitialise it, add gravity and viscosity, place the bodies, project, and
-// extend the velocity into the air. The bodies feel the pressure on their surface points.
+// extend the velocity into the air. A free body's velocity is solved with the pressure, and its
+// load is the pressure on its cut faces.
 #pragma once
 
 #include <memory>

@@ -24,8 +24,8 @@ MacParameters read_mac_parameters(const io::CaseConfig& config) {
   p.solver = model.optional_choice("solver", p.solver, "pressure solver", solvers);
   p.tolerance = model.optional_positive("tolerance", p.tolerance);
   p.max_iterations = static_cast<int>(model.optional_positive("max_iterations", p.max_iterations));
-  p.particles_per_cell = static_cast<int>(
-      model.optional_non_negative("particles_per_cell", config.dimension == 2 ? 16 : 16));
+  p.particles_per_cell =
+      static_cast<int>(model.optional_non_negative("particles_per_cell", p.particles_per_cell));
   p.reinitialise_every =
       static_cast<int>(model.optional_positive("reinitialise_every", p.reinitialise_every));
   model.finish();

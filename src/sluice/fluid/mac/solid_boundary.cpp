@@ -47,12 +47,11 @@ SolidBoundary<D>::SolidBoundary(const MacGrid<D>& grid, const BodyGeometry& geom
   body_reach_.assign(geometry.body_count(), 0);
   for (const BodyPoint& p : surface)
     body_reach_[p.body] = std::max(body_reach_[p.body], p.local.norm());
-  place_bodies(geometry, geometry.motion());
+  place_bodies(geometry.motion());
 }
 
 template <int D>
-void SolidBoundary<D>::place_bodies(const BodyGeometry& geometry,
-                                    const std::vector<BodyKinematics>& motion) {
+void SolidBoundary<D>::place_bodies(const std::vector<BodyKinematics>& motion) {
   const Lattice<D> nodes = grid_.node_lattice();
   nodes_ = wall_nodes_;
   nearest_body_.assign(nodes.size(), -1);
@@ -80,7 +79,7 @@ void SolidBoundary<D>::place_bodies(const BodyGeometry& geometry,
       GridIndex<D> c = box.coordinates(j);
       for (int a = 0; a < D; ++a) c[a] += lo[a];
       const std::size_t k = nodes.index(c);
-      const Real d = geometry.nearest_on_body(b, to_3d<D>(nodes.position(c))).distance;
+      const Real d = geometry_->nearest_on_body(b, to_3d<D>(nodes.position(c))).distance;
       if (d < nodes_[k]) {
         nodes_[k] = d;
         nearest_body_[k] = static_cast<int>(b);

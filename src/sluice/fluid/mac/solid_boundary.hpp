@@ -18,7 +18,7 @@ class SolidBoundary {
   SolidBoundary(const MacGrid<D>& grid, const BodyGeometry& geometry);
 
   // The faces with the bodies at `motion`.
-  void place_bodies(const BodyGeometry& geometry, const std::vector<BodyKinematics>& motion);
+  void place_bodies(const std::vector<BodyKinematics>& motion);
 
   const SolidFaces<D>& faces() const { return faces_; }
   // Signed distance to the nearest solid at the cells' corners (negative inside).
