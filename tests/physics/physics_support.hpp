@@ -1,7 +1,10 @@
 // Shared set-up for the physics checks: load a shipped case, run it in-process.
 #pragma once
 
+#include <omp.h>
+
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sluice/io/case_config.hpp"
@@ -21,6 +24,19 @@ void run_until(Simulation<D>& sim, double end, Observe&& observe) {
     sim.step(end);
     observe(sim.clock());
   }
+}
+
+// What `run()` returns on one OpenMP thread and then on two (the thread count restored), for
+// the checks that a model gives the same answer bit for bit on any number of threads.
+template <class Run>
+auto on_one_and_two_threads(Run&& run) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  auto one = run();
+  omp_set_num_threads(2);
+  auto two = run();
+  omp_set_num_threads(before);
+  return std::make_pair(std::move(one), std::move(two));
 }
 
 // F2: the RMS difference [m] between the 2D dam break's surge front (cases/dam_break_2d.yaml

@@ -1,7 +1,6 @@
 // The constraint-fluid model (issue 12; seed 001's second method): one density constraint per
 // particle, solved with the bodies in one complementarity problem.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -103,20 +102,16 @@ TEST(ConstraintFluid, DensityErrorAtFiveTimesTheWcsphStep) {
 // Same answer on one and two threads, bit for bit: every row is built and every particle's
 // velocity change gathered by one thread, the solver's dot products sum in fixed blocks.
 TEST(ConstraintFluid, SameOnOneAndTwoThreads) {
-  const int before = omp_get_max_threads();
-  ParticleSet<2> runs[2];
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
+  const auto [one, two] = testing::on_one_and_two_threads([] {
     Simulation<2> sim(load_case("dam_break_2d.yaml", {"model.name=constraint", "spacing=0.05"}));
     run_until(sim, 0.2, [](const StepClock&) {});
-    runs[threads - 1] = sim.state().particles;
-  }
-  omp_set_num_threads(before);
-  ASSERT_EQ(runs[0].size(), runs[1].size());
-  for (std::size_t i = 0; i < runs[0].size(); ++i) {
-    ASSERT_EQ(runs[0].position[i], runs[1].position[i]) << i;
-    ASSERT_EQ(runs[0].velocity[i], runs[1].velocity[i]) << i;
-    ASSERT_EQ(runs[0].pressure[i], runs[1].pressure[i]) << i;
+    return sim.state().particles;
+  });
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    ASSERT_EQ(one.position[i], two.position[i]) << i;
+    ASSERT_EQ(one.velocity[i], two.velocity[i]) << i;
+    ASSERT_EQ(one.pressure[i], two.pressure[i]) << i;
   }
 }
 

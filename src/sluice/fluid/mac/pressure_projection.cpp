@@ -170,16 +170,17 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
   Eigen::MatrixXd w = Eigen::MatrixXd::Zero(columns, columns);
   for (std::size_t b = 0; b < bodies.size(); ++b)
     w.block<6, 6>(6 * b, 6 * b) = cell_mass * bodies[b].mobility;
-  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(rows, columns);
-  bool mobile = false;
-  for (int c = 0; c < columns; ++c) {
-    if (w.col(c).isZero() || g.col(c).squaredNorm() == 0) continue;
-    Eigen::VectorXd column = Eigen::VectorXd(g.col(c)), solution = Eigen::VectorXd::Zero(rows);
-    solve(column, solution);
-    y.col(c) = solution;
-    mobile = true;
-  }
-  if (mobile) {
+  // The free directions that the water touches; no room for the others (a grid's worth each).
+  std::vector<int> free;
+  for (int c = 0; c < columns; ++c)
+    if (!w.col(c).isZero() && g.col(c).squaredNorm() > 0) free.push_back(c);
+  if (!free.empty()) {
+    Eigen::MatrixXd y = Eigen::MatrixXd::Zero(rows, columns);
+    for (const int c : free) {
+      Eigen::VectorXd column = Eigen::VectorXd(g.col(c)), solution = Eigen::VectorXd::Zero(rows);
+      solve(column, solution);
+      y.col(c) = solution;
+    }
     const Eigen::MatrixXd gty = Eigen::MatrixXd(g.transpose() * y);
     const Eigen::MatrixXd s = Eigen::MatrixXd::Identity(columns, columns) + w * gty;
     x -= y * s.partialPivLu().solve(w * (g.transpose() * x));
