@@ -1,5 +1,5 @@
-// The `sluice` command line: run a case, check it, or sweep its parameters. Exit codes: 0 done,
-// 1 internal failure, 2 bad input, 3 the run (or a run of a sweep) diverged.
+// The `sluice` command line: run a case, check it, sweep its parameters, or compare models. Exit
+// codes: 0 done, 1 internal failure, 2 bad input, 3 the run (or a run of a sweep) diverged.
 #include <fmt/format.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <exception>
 
+#include "child_runs.hpp"
+#include "compare_command.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
@@ -82,6 +84,22 @@ int main(int argc, char** argv) {
   sweep->add_option("--end", sweep_options.end_time, "end time of every run")
       ->check(CLI::PositiveNumber);
 
+  sluice::CompareOptions compare_options;
+  CLI::App* compare = app.add_subcommand(
+      "compare", "run a case with several fluid models; one table and plot of their answers");
+  compare->add_option("CASE", compare_options.case_path, "case file (YAML)")->required();
+  compare->add_option("--models", compare_options.models,
+                      "fluid models, comma-separated (default: the case's compare: entries, or "
+                      "every model)");
+  compare->add_option("--set", compare_options.settings,
+                      "override a case key in every run: key.path=value (repeatable)");
+  compare->add_option("--out", compare_options.out_dir,
+                      "output directory (default: out/compare_CASE_NAME)");
+  compare->add_option("--jobs", compare_options.jobs, "runs at once (default: 1, for fair timings)")
+      ->check(CLI::PositiveNumber);
+  compare->add_option("--end", compare_options.end_time, "end time of every run")
+      ->check(CLI::PositiveNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -92,11 +110,12 @@ int main(int argc, char** argv) {
 
   try {
     if (sweep->parsed()) {
-      sweep_options.self = "/proc/self/exe";
-      char self[4096];
-      const ssize_t length = readlink("/proc/self/exe", self, sizeof(self) - 1);
-      if (length > 0) sweep_options.self.assign(self, static_cast<std::size_t>(length));
+      sweep_options.self = sluice::this_program();
       return sluice::run_sweep(sweep_options);
+    }
+    if (compare->parsed()) {
+      compare_options.self = sluice::this_program();
+      return sluice::run_compare(compare_options);
     }
     sluice::exec::set_thread_count(threads);
     const sluice::io::CaseConfig config = sluice::io::read_case(case_path, overrides);

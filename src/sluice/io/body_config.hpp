@@ -25,7 +25,9 @@ struct PoseSample {
 
 struct PrescribedConfig {
   PrescribedKind kind = PrescribedKind::kConstantVelocity;
-  // constant velocity: the body's initial velocity and angular velocity, held forever.
+  // constant velocity: the body's initial velocity and angular velocity, held forever, reached
+  // from rest over ramp_time (0: at once) along (1 - cos(pi t / ramp_time)) / 2.
+  double ramp_time = 0;  // s
   // sinusoid: displacement amplitude * (sin(2 pi f t + phase) - sin(phase)), so that the body
   // starts at its position whatever the phase; rotation likewise.
   Vec3 amplitude = Vec3::Zero();

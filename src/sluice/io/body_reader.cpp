@@ -30,6 +30,7 @@ PrescribedConfig read_prescribed(MapReader& map, const std::string& case_file) {
   const std::string type = map.required<std::string>("type");
   if (type == "constant_velocity") {
     p.kind = PrescribedKind::kConstantVelocity;
+    p.ramp_time = map.optional_non_negative("ramp_time", 0.0);
   } else if (type == "sinusoid") {
     p.kind = PrescribedKind::kSinusoid;
     p.amplitude = map.optional<Vec3>("amplitude", Vec3::Zero());

@@ -91,6 +91,15 @@ struct JointConfig {
   int line = 0;
 };
 
+// One entry of `compare:`: the settings a model's run of `sluice compare` takes, as --set
+// assignments "KEY.PATH=VALUE" in the order given.
+struct CompareEntry {
+  std::string model;
+  std::vector<std::string> settings;
+  bool sets_model = false;  // a `model` key replaces the whole model mapping
+  int line = 0;
+};
+
 struct CaseConfig {
   std::shared_ptr<const YamlSource> source;  // file name and --set overrides
   std::string name;
@@ -98,6 +107,7 @@ struct CaseConfig {
   double spacing = 0;  // initial particle spacing dx [m]
   AxisBox domain;      // particles leaving it stop the run
   Vec3 gravity = Vec3(0, 0, -9.81);
+  Vec3 travel_direction = Vec3::UnitX();  // unit, across gravity: the drag of OUT/loads.csv
   double end_time = 0;
   double output_interval = 0;
   double probe_interval = 0;
@@ -108,6 +118,7 @@ struct CaseConfig {
   std::vector<JointConfig> joints;
   double body_interval = 0;  // time between rows of OUT/bodies/NAME.csv
   std::vector<ProbeConfig> probes;
+  std::vector<CompareEntry> compare;  // read by `sluice compare` only
   std::string model_name;
   YAML::Node model;  // the whole `model:` mapping, read by the model
   int model_line = 0;

@@ -97,6 +97,32 @@ ProbeConfig read_probe(MapReader& probe, size_t index, int dimension) {
   return p;
 }
 
+// `compare:` maps model names to the --set assignments of their runs. The names are checked
+// against the models by `sluice compare`, which knows them.
+std::vector<CompareEntry> read_compare(MapReader& top) {
+  std::vector<CompareEntry> entries;
+  MapReader compare = top.map("compare");
+  const YAML::Node all = top.node("compare");
+  for (const auto& item : all) {
+    CompareEntry entry;
+    entry.model = item.first.as<std::string>();
+    entry.line = line_of(item.first);
+    const YAML::Node settings = compare.node(entry.model);
+    if (!settings.IsNull() && !settings.IsMap()) {
+      compare.fail(entry.model, "must be a mapping of key paths to values, as --set takes them");
+    }
+    for (const auto& setting : settings) {
+      YAML::Emitter value;
+      value << YAML::Flow << setting.second;
+      const std::string key = setting.first.as<std::string>();
+      entry.settings.push_back(key + "=" + value.c_str());
+      entry.sets_model = entry.sets_model || key == "model";
+    }
+    entries.push_back(std::move(entry));
+  }
+  return entries;
+}
+
 }  // namespace
 
 AxisBox read_box(MapReader& map, int dimension) {
@@ -150,6 +176,18 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   domain.finish();
 
   c.gravity = top.optional<Vec3>("gravity", c.dimension == 2 ? Vec3(0, 0, -9.81) : c.gravity);
+  if (top.has("travel_direction")) {
+    const Vec3 travel = top.required<Vec3>("travel_direction");
+    const Vec3 across = c.gravity.norm() > 0
+                            ? travel - travel.dot(c.gravity.normalized()) * c.gravity.normalized()
+                            : travel;
+    if (across.norm() <= 1e-9 * std::max(1.0, travel.norm())) {
+      top.fail("travel_direction", travel.norm() == 0 ? "must not be zero"
+                                                      : "must not be along gravity (it is the "
+                                                        "horizontal direction the drag opposes)");
+    }
+    c.travel_direction = across.normalized();
+  }
   c.end_time = top.required_positive("end_time");
   c.output_interval = top.required_positive("output_interval");
   c.probe_interval = top.optional_positive("probe_interval", c.output_interval / 10);
@@ -193,6 +231,8 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   index = 0;
   for (auto& probe : top.list_of_maps("probes"))
     c.probes.push_back(read_probe(probe, index++, c.dimension));
+
+  if (top.has("compare")) c.compare = read_compare(top);
 
   if (!c.has_fluid() && top.has("model")) {
     top.fail("model", "a case of bodies alone (no 'fluid') has no fluid model");

@@ -4,8 +4,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <optional>
 #include <stdexcept>
+
+#include "sluice/io/text_table.hpp"
 
 namespace sluice::io {
 
@@ -17,28 +18,12 @@ void add_map(const YAML::Node& map, Measurements& out) {
     out.emplace_back(entry.first.as<std::string>(), entry.second.as<double>());
 }
 
-std::vector<std::string> measurement_names(const std::vector<SweepResult>& results) {
-  std::vector<std::string> names;
-  for (const SweepResult& r : results) {
-    for (const auto& m : r.measurements) {
-      if (std::find(names.begin(), names.end(), m.first) == names.end()) names.push_back(m.first);
-    }
-  }
-  return names;
-}
-
-std::optional<double> value_of(const SweepResult& r, const std::string& name) {
-  for (const auto& m : r.measurements) {
-    if (m.first == name) return m.second;
-  }
-  return std::nullopt;
-}
-
 // One table as rows of cells, the header first.
-std::vector<std::vector<std::string>> cells(const std::vector<std::string>& keys,
-                                            const std::vector<SweepResult>& results) {
-  const std::vector<std::string> names = measurement_names(results);
-  std::vector<std::vector<std::string>> rows;
+TextTable cells(const std::vector<std::string>& keys, const std::vector<SweepResult>& results) {
+  std::vector<const Measurements*> runs;
+  for (const SweepResult& r : results) runs.push_back(&r.measurements);
+  const std::vector<std::string> names = measurement_names(runs);
+  TextTable rows;
   std::vector<std::string> header{"run"};
   header.insert(header.end(), keys.begin(), keys.end());
   header.push_back("status");
@@ -49,35 +34,24 @@ std::vector<std::vector<std::string>> cells(const std::vector<std::string>& keys
     std::vector<std::string> row{std::to_string(k + 1)};
     row.insert(row.end(), r.values.begin(), r.values.end());
     row.push_back(r.status);
-    for (const std::string& name : names) {
-      const auto v = value_of(r, name);
-      row.push_back(v ? fmt::format("{:.6g}", *v) : "");
-    }
+    for (const std::string& name : names) row.push_back(measurement_cell(r.measurements, name));
     rows.push_back(row);
   }
   return rows;
 }
 
-std::string csv_cell(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  quoted += '"';
-  return quoted;
-}
-
 }  // namespace
 
-Measurements read_run_measurements(const std::string& stats_path) {
-  YAML::Node stats;
+YAML::Node load_run_statistics(const std::string& stats_path) {
   try {
-    stats = YAML::LoadFile(stats_path);  // JSON is YAML
+    return YAML::LoadFile(stats_path);  // JSON is YAML
   } catch (const YAML::Exception& e) {
     throw std::runtime_error(stats_path + ": cannot read the run statistics: " + e.msg);
   }
+}
+
+Measurements read_run_measurements(const std::string& stats_path) {
+  const YAML::Node stats = load_run_statistics(stats_path);
   Measurements out;
   add_map(stats["fluid_counters"], out);
   add_map(stats["final_probes"], out);
@@ -89,36 +63,12 @@ Measurements read_run_measurements(const std::string& stats_path) {
 
 std::string sweep_table_csv(const std::vector<std::string>& keys,
                             const std::vector<SweepResult>& results) {
-  std::string text;
-  for (const auto& row : cells(keys, results)) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c > 0) text += ',';
-      text += csv_cell(row[c]);
-    }
-    text += '\n';
-  }
-  return text;
+  return table_csv(cells(keys, results));
 }
 
 std::string sweep_table_markdown(const std::vector<std::string>& keys,
                                  const std::vector<SweepResult>& results) {
-  const auto rows = cells(keys, results);
-  std::string text;
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    text += "|";
-    for (const std::string& cell : rows[r]) {
-      text += ' ';
-      text += cell;
-      text += " |";
-    }
-    text += "\n";
-    if (r == 0) {
-      text += "|";
-      for (std::size_t c = 0; c < rows[r].size(); ++c) text += "---|";
-      text += "\n";
-    }
-  }
-  return text;
+  return table_markdown(cells(keys, results));
 }
 
 }  // namespace sluice::io

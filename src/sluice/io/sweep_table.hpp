@@ -3,19 +3,24 @@
 // --stats file), as CSV and as a Markdown table.
 #pragma once
 
+#include <yaml-cpp/yaml.h>
+
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace sluice::io {
+#include "sluice/io/measurements.hpp"
 
-using Measurements = std::vector<std::pair<std::string, double>>;
+namespace sluice::io {
 
 struct SweepResult {
   std::vector<std::string> values;  // one per swept key
   std::string status;               // "done", "diverged", "failed (exit N)"
   Measurements measurements;        // empty when the run did not finish
 };
+
+// A run's --stats JSON. Throws std::runtime_error naming the file if it cannot be read.
+YAML::Node load_run_statistics(const std::string& stats_path);
 
 // The measurements of a finished run from its --stats JSON: the model's figures
 // (`fluid_counters`), each probe at the end (`final_probes`), then `steps` and `wall_seconds`.

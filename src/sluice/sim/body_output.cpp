@@ -7,7 +7,12 @@
 
 namespace sluice {
 
-BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies) {
+BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies, const Vec3& travel,
+                       const Vec3& gravity, int dimension)
+    : lift_axis_(gravity.norm() > 0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ()),
+      with_side_(dimension == 3) {
+  drag_axis_ = -travel;
+  side_axis_ = lift_axis_.cross(travel);
   energy_csv_ = std::make_unique<io::CsvWriter>(
       out_dir + "/energy.csv",
       std::vector<std::string>{"time", "body_kinetic", "body_potential", "contact_elastic",
@@ -28,6 +33,15 @@ BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies) {
     body_csv_.push_back(std::make_unique<io::CsvWriter>(
         out_dir + "/bodies/" + bodies.config(b).name + ".csv", header));
   }
+  std::vector<std::string> loads_header{"time"};
+  const auto add_columns = [&](const std::string& name) {
+    loads_header.push_back(name + "_drag");
+    loads_header.push_back(name + "_lift");
+    if (with_side_) loads_header.push_back(name + "_side");
+  };
+  for (std::size_t b = 0; b < bodies.count(); ++b) add_columns(bodies.config(b).name);
+  add_columns("all_bodies");
+  loads_csv_ = std::make_unique<io::CsvWriter>(out_dir + "/loads.csv", loads_header);
 }
 
 void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& coupler,
@@ -45,6 +59,21 @@ void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& c
                        q.z(), s.velocity[0], s.velocity[1], s.velocity[2], w[0],  w[1],  w[2],
                        ff[0], ff[1],         ff[2],         fm[0],         fm[1], fm[2], cf[0],
                        cf[1], cf[2],         cm[0],         cm[1],         cm[2]});
+  }
+  if (loads_csv_) {
+    std::vector<double> row{time};
+    Vec3 total = Vec3::Zero();
+    const auto add_loads = [&](const Vec3& force) {
+      row.push_back(force.dot(drag_axis_));
+      row.push_back(force.dot(lift_axis_));
+      if (with_side_) row.push_back(force.dot(side_axis_));
+    };
+    for (std::size_t b = 0; b < bodies.count(); ++b) {
+      add_loads(coupler.fluid_force()[b]);
+      total += coupler.fluid_force()[b];
+    }
+    add_loads(total);
+    loads_csv_->row(row);
   }
   const RigidSystemEnergy e = system.energy();
   energy_csv_->row({time, e.kinetic, e.potential, e.elastic, fluid.kinetic, fluid.potential,

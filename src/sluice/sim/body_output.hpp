@@ -1,5 +1,6 @@
 // Time series of the rigid bodies: OUT/bodies/NAME.csv per body (pose, velocities, the fluid's
-// and the contacts' force and moment) and OUT/energy.csv (docs/output.md).
+// and the contacts' force and moment), OUT/loads.csv (the fluid's force on each body and on all
+// of them as drag, lift and side force) and OUT/energy.csv (docs/output.md).
 #pragma once
 
 #include <memory>
@@ -15,15 +16,21 @@ namespace sluice {
 
 class BodyOutput {
  public:
-  // Creates OUT/bodies and the files (nothing when there are no bodies).
-  BodyOutput(const std::string& out_dir, const RigidBodies& bodies);
+  // Creates OUT/bodies and the files (only energy.csv when there are no bodies). Drag is the
+  // fluid's force against `travel` (unit, horizontal), lift along -gravity, side along
+  // up x travel (3D only).
+  BodyOutput(const std::string& out_dir, const RigidBodies& bodies, const Vec3& travel,
+             const Vec3& gravity, int dimension);
 
   void record(double time, const RigidBodies& bodies, const Coupler& coupler,
               const FluidEnergy& fluid);
 
  private:
   std::vector<std::unique_ptr<io::CsvWriter>> body_csv_;
+  std::unique_ptr<io::CsvWriter> loads_csv_;
   std::unique_ptr<io::CsvWriter> energy_csv_;
+  Vec3 drag_axis_, lift_axis_, side_axis_;  // drag_axis_ = -travel
+  bool with_side_ = true;
 };
 
 }  // namespace sluice

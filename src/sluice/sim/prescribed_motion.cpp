@@ -25,12 +25,21 @@ ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
   Vec3 position = body.position, angles = body.rotation;
   Vec3 velocity = Vec3::Zero(), rates = Vec3::Zero();
   switch (p.kind) {
-    case io::PrescribedKind::kConstantVelocity:
-      velocity = body.velocity;
-      rates = body.angular_velocity;
-      position += time * velocity;
-      angles += time * rates;
+    case io::PrescribedKind::kConstantVelocity: {
+      // A smooth start, (1 - cos(pi t / T)) / 2 of the speed, spares the fluid the pressure
+      // wave of an impulsive one; `travelled` is its integral, the time spent at full speed.
+      const double ramp = p.ramp_time;
+      const double share = time >= ramp ? 1 : (1 - std::cos(std::numbers::pi * time / ramp)) / 2;
+      const double travelled =
+          time >= ramp
+              ? time - ramp / 2
+              : (time - ramp / std::numbers::pi * std::sin(std::numbers::pi * time / ramp)) / 2;
+      velocity = share * body.velocity;
+      rates = share * body.angular_velocity;
+      position += travelled * body.velocity;
+      angles += travelled * body.angular_velocity;
       break;
+    }
     case io::PrescribedKind::kSinusoid: {
       const double omega = 2 * std::numbers::pi * p.frequency;
       const double s = std::sin(omega * time + p.phase) - std::sin(p.phase);

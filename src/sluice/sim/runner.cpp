@@ -32,7 +32,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // must leave no directory behind.
   Simulation<D> sim(config);
   FrameOutput frames(options.out_dir, config.name);
-  BodyOutput body_output(options.out_dir, sim.bodies());
+  BodyOutput body_output(options.out_dir, sim.bodies(), config.travel_direction, config.gravity, D);
   FluidSystem& fluid = sim.fluid();
   Probes probes(config.probes, options.out_dir + "/probes.csv");
   AxisBox escape_box = config.domain;
@@ -43,6 +43,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
 
   RunSummary summary;
   summary.particles = fluid.size().elements;
+  summary.element_name = fluid.size().element_name;
   summary.fluid_particles = fluid.size().fluid;
   summary.threads = exec::thread_count();
   summary.series_path = frames.series_path();
@@ -181,7 +182,8 @@ std::string stats_json(const RunSummary& r) {
   const double fluid_rate =
       r.wall_seconds > 0 ? static_cast<double>(r.fluid_particles) * r.steps / r.wall_seconds : 0;
   return fmt::format(
-      "{{\n  \"particles\": {},\n  \"fluid_particles\": {},\n  \"steps\": {},\n"
+      "{{\n  \"element_name\": \"{}\",\n  \"particles\": {},\n  \"fluid_particles\": {},\n"
+      "  \"steps\": {},\n"
       "  \"simulated_seconds\": {:.9g},\n  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n"
       "  \"particle_steps_per_second\": {:.6g},\n  \"fluid_particle_steps_per_second\": {:.6g},\n"
       "  \"wall_seconds_per_simulated_second\": {:.6g},\n  \"frames\": {},\n"
@@ -190,8 +192,8 @@ std::string stats_json(const RunSummary& r) {
       "  \"velocity_solves\": {{{}}},\n"
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
-      r.particles, r.fluid_particles, r.steps, r.simulated_time, r.wall_seconds, r.threads,
-      r.particle_steps_per_second(), fluid_rate,
+      r.element_name, r.particles, r.fluid_particles, r.steps, r.simulated_time, r.wall_seconds,
+      r.threads, r.particle_steps_per_second(), fluid_rate,
       r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0, r.frames, r.bodies,
       r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
       r.most_substeps_per_step, r.most_exchanges_per_step, json_map(velocity_solves),

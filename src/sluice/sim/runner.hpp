@@ -19,6 +19,7 @@ struct RunOptions {
 };
 
 struct RunSummary {
+  std::string element_name = "particles";  // what `particles` counts: particles or cells
   std::size_t particles = 0;
   std::size_t fluid_particles = 0;
   long steps = 0;

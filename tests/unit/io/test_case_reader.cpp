@@ -303,5 +303,44 @@ TEST(ClosestMatch, SuggestsNothingWhenNothingIsClose) {
   EXPECT_EQ(closest_match("anything", {}), "");
 }
 
+// `compare:` (read by `sluice compare`): each model's settings become --set assignments in
+// the order given; a `model` key replaces the whole model mapping.
+TEST(CaseReader, CompareSettingsBecomeAssignments) {
+  const CaseConfig c = parse_case(kMinimal +
+                                      "compare:\n"
+                                      "  mps: {spacing: 0.05, model: {name: mps, solver: cg}}\n"
+                                      "  wcsph: {}\n"
+                                      "  mac:\n",
+                                  "case.yaml");
+  ASSERT_EQ(c.compare.size(), 3u);
+  EXPECT_EQ(c.compare[0].model, "mps");
+  EXPECT_EQ(c.compare[0].settings,
+            (std::vector<std::string>{"spacing=0.05", "model={name: mps, solver: cg}"}));
+  EXPECT_TRUE(c.compare[0].sets_model);
+  EXPECT_EQ(c.compare[0].line, 12);
+  EXPECT_TRUE(c.compare[1].settings.empty());
+  EXPECT_FALSE(c.compare[1].sets_model);
+  EXPECT_TRUE(c.compare[2].settings.empty());
+}
+
+TEST(CaseReader, CompareEntryThatIsNotAMapping) {
+  const InputError e = error_of(kMinimal + "compare:\n  mps: 0.05\n");
+  EXPECT_EQ(std::string(e.what()),
+            "case.yaml:12: key 'compare.mps': must be a mapping of key paths to values, as --set "
+            "takes them");
+}
+
+// The drag of loads.csv opposes the travel direction's horizontal part.
+TEST(CaseReader, TravelDirectionIsMadeHorizontalAndUnit) {
+  EXPECT_EQ(parse_case(kMinimal, "case.yaml").travel_direction, Vec3::UnitX());
+  const CaseConfig c = parse_case(kMinimal + "travel_direction: [-2, 1]\n", "case.yaml");
+  EXPECT_NEAR((c.travel_direction - Vec3(-1, 0, 0)).norm(), 0, 1e-15);
+  EXPECT_EQ(std::string(error_of(kMinimal + "travel_direction: [0, 3]\n").what()),
+            "case.yaml:11: key 'travel_direction': must not be along gravity (it is the "
+            "horizontal direction the drag opposes)");
+  EXPECT_EQ(std::string(error_of(kMinimal + "travel_direction: [0, 0]\n").what()),
+            "case.yaml:11: key 'travel_direction': must not be zero");
+}
+
 }  // namespace
 }  // namespace sluice::io

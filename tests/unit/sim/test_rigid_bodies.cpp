@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "sluice/io/case_config.hpp"
+#include "sluice/sim/prescribed_motion.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace sluice {
@@ -63,6 +64,31 @@ TEST(RigidBodies, PrescribedBodyIsPlacedAtItsPose) {
       false));
   EXPECT_TRUE(bodies.system().bodies()[0].fixed);
   EXPECT_EQ(bodies.state(0).velocity, Vec3(0.5, 0, 0));
+}
+
+// A ramped constant velocity starts from rest, reaches the set speed at ramp_time along
+// (1 - cos(pi t / T)) / 2, and from then on lies T/2 of travel behind the unramped motion.
+TEST(RigidBodies, RampedConstantVelocityStartsFromRest) {
+  const io::CaseConfig c = case_with(
+      "  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.3, 0.5, 0.5], "
+      "velocity: [0.5, 0, 0], motion: prescribed,\n"
+      "     prescribed: {type: constant_velocity, ramp_time: 0.4}}\n",
+      false);
+  const io::BodyConfig& body = c.bodies[0];
+  EXPECT_EQ(prescribed_pose(body, 0).velocity, Vec3::Zero());
+  EXPECT_NEAR(prescribed_pose(body, 0.2).velocity[0], 0.25, 1e-15);
+  EXPECT_NEAR(prescribed_pose(body, 0.4).velocity[0], 0.5, 1e-15);
+  EXPECT_NEAR(prescribed_pose(body, 1.0).position[0], 0.3 + 0.5 * (1.0 - 0.2), 1e-15);
+  // The position is the integral of the velocity: a central difference matches it.
+  for (const double t : {0.05, 0.2, 0.39, 0.41}) {
+    const double h = 1e-6;
+    const double slope =
+        (prescribed_pose(body, t + h).position[0] - prescribed_pose(body, t - h).position[0]) /
+        (2 * h);
+    EXPECT_NEAR(slope, prescribed_pose(body, t).velocity[0], 1e-8) << t;
+  }
+  const RigidBodies bodies(c);
+  EXPECT_EQ(bodies.state(0).velocity, Vec3::Zero());
 }
 
 // Distance queries on a body turned 45 degrees about z, and on the tank's walls.

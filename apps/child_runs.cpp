@@ -1,0 +1,136 @@
+#include "child_runs.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <map>
+#include <stdexcept>
+
+#include "sluice/core/errors.hpp"
+
+extern char** environ;
+
+namespace sluice {
+
+namespace {
+
+// Starts args[0] with args; with `log`, its stdout and stderr go to that file. Throws
+// std::runtime_error when it cannot start.
+pid_t spawn(std::vector<std::string> args, const std::string& log = "") {
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  if (!log.empty()) {
+    posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, log.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&files, STDOUT_FILENO, STDERR_FILENO);
+  }
+  pid_t pid = 0;
+  const int failed = posix_spawn(&pid, argv[0], &files, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  if (failed != 0) throw std::runtime_error("cannot start " + args[0] + ": " + strerror(failed));
+  return pid;
+}
+
+std::string status_of(int wait_status) {
+  if (WIFEXITED(wait_status)) {
+    const int code = WEXITSTATUS(wait_status);
+    if (code == kExitOk) return "done";
+    if (code == kExitDiverged) return "diverged";
+    return fmt::format("failed (exit {})", code);
+  }
+  return "failed (killed)";
+}
+
+struct RunningJob {
+  std::size_t run = 0;
+  std::chrono::steady_clock::time_point start;
+};
+
+}  // namespace
+
+ChildRun sluice_run(const std::string& program, const std::string& case_path,
+                    const std::string& dir, int threads, double end_time,
+                    const std::vector<std::string>& overrides) {
+  std::vector<std::string> args{program,
+                                "run",
+                                case_path,
+                                "--out",
+                                dir,
+                                "--threads",
+                                std::to_string(threads),
+                                "--stats",
+                                dir + "/stats.json"};
+  if (end_time > 0) {
+    args.push_back("--end");
+    args.push_back(fmt::format("{}", end_time));
+  }
+  for (const std::string& s : overrides) {
+    args.push_back("--set");
+    args.push_back(s);
+  }
+  return {std::move(args), dir + ".log"};
+}
+
+std::vector<ChildOutcome> run_children(
+    const std::vector<ChildRun>& runs, int jobs,
+    const std::function<void(std::size_t, const ChildOutcome&)>& finished) {
+  std::vector<ChildOutcome> outcomes(runs.size());
+  std::map<pid_t, RunningJob> running;
+  std::size_t next = 0, done = 0;
+  while (done < runs.size()) {
+    while (next < runs.size() && static_cast<int>(running.size()) < jobs) {
+      const pid_t pid = spawn(runs[next].args, runs[next].log);
+      running[pid] = RunningJob{next, std::chrono::steady_clock::now()};
+      ++next;
+    }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0 && errno != EINTR) {
+      throw std::runtime_error(std::string("waiting for the runs: ") + strerror(errno));
+    }
+    const auto job = running.find(pid);
+    if (job == running.end()) continue;  // interrupted, or not one of ours
+    const std::size_t k = job->second.run;
+    outcomes[k].seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - job->second.start).count();
+    outcomes[k].status = status_of(status);
+    running.erase(job);
+    ++done;
+    finished(k, outcomes[k]);
+  }
+  return outcomes;
+}
+
+std::string this_program() {
+  char self[4096];
+  const ssize_t length = readlink("/proc/self/exe", self, sizeof(self) - 1);
+  if (length <= 0) return "/proc/self/exe";
+  return std::string(self, static_cast<std::size_t>(length));
+}
+
+void draw_plots(const std::string& script, const std::vector<std::string>& args) {
+  const std::string path = std::string(SLUICE_SOURCE_DIR) + "/scripts/" + script;
+  const std::string python = "/usr/bin/python3";
+  if (access(path.c_str(), R_OK) != 0 || access(python.c_str(), X_OK) != 0) {
+    fmt::print("plots: not drawn ({} or {} missing)\n", python, path);
+    return;
+  }
+  std::vector<std::string> command{python, path};
+  command.insert(command.end(), args.begin(), args.end());
+  int status = 0;
+  if (waitpid(spawn(command), &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    fmt::print("plots: {} {} failed\n", python, path);
+  }
+}
+
+}  // namespace sluice

@@ -1,0 +1,40 @@
+// Runs of `sluice run` started by `sluice sweep` and `sluice compare`: each a child process with
+// its messages in a log file, several at once where the cores allow.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace sluice {
+
+struct ChildRun {
+  std::vector<std::string> args;  // args[0] is the program
+  std::string log;                // its stdout and stderr go here
+};
+
+struct ChildOutcome {
+  std::string status;  // "done", "diverged", "failed (exit N)", "failed (killed)"
+  double seconds = 0;  // wall-clock
+};
+
+// `PROGRAM run CASE --out DIR --threads N --stats DIR/stats.json [--end T] --set ...`, its
+// messages in DIR.log. end_time 0: the case's.
+ChildRun sluice_run(const std::string& program, const std::string& case_path,
+                    const std::string& dir, int threads, double end_time,
+                    const std::vector<std::string>& overrides);
+
+// Runs `runs`, `jobs` at once, and calls `finished(k, outcome)` as run k ends. Throws
+// std::runtime_error when a run cannot be started.
+std::vector<ChildOutcome> run_children(
+    const std::vector<ChildRun>& runs, int jobs,
+    const std::function<void(std::size_t, const ChildOutcome&)>& finished);
+
+// This program's path, to start the runs with.
+std::string this_program();
+
+// Runs `/usr/bin/python3 SLUICE_SOURCE_DIR/scripts/SCRIPT ARGS...` (Debian's matplotlib) when
+// both are there; says so on stdout when not, or when it fails.
+void draw_plots(const std::string& script, const std::vector<std::string>& args);
+
+}  // namespace sluice
