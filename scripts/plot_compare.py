@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Plots of a `sluice compare`: for each model's run in OUT/MODEL, the drag and lift on all the
-bodies against time (OUT/compare_forces.png, from loads.csv) and each probe against time
-(OUT/compare_probes.png, from probes.csv), one line per model. A run that wrote no such file is
-left out of that plot.
+bodies against time (OUT/compare_forces.png, from loads.csv; their running mean over 0.05 s, as
+the table's peaks, since a particle model's forces carry acoustic spikes) and each probe against
+time (OUT/compare_probes.png, from probes.csv), one line per model. A run that wrote no such file
+is left out of that plot.
 
 usage: /usr/bin/python3 scripts/plot_compare.py OUT MODEL [MODEL ...]
 """
@@ -29,8 +30,18 @@ def read_columns(path):
     return {name: [float(r[k]) for r in rows[1:]] for k, name in enumerate(names)}
 
 
-def plot_panels(out, models, file_name, panels, image, title):
-    """One panel per (column, label) of `panels`, one line per model that has the file."""
+def running_mean(time, values, window):
+    """The mean of `values` over `window` seconds centred on each time."""
+    out = []
+    for t in time:
+        inside = [v for s, v in zip(time, values) if abs(s - t) <= window / 2]
+        out.append(sum(inside) / len(inside))
+    return out
+
+
+def plot_panels(out, models, file_name, panels, image, title, window=0.0):
+    """One panel per (column, label) of `panels`, one line per model that has the file; with a
+    window, each line is the running mean over it."""
     runs = [(m, read_columns(os.path.join(out, m, file_name))) for m in models]
     runs = [(m, c) for m, c in runs if c is not None]
     if not runs or not panels:
@@ -40,7 +51,10 @@ def plot_panels(out, models, file_name, panels, image, title):
     for ax, (column, label) in zip(axes[:, 0], panels):
         for model, columns in runs:
             if column in columns:
-                ax.plot(columns["time"], columns[column], label=model, linewidth=1.2)
+                values = columns[column]
+                if window > 0:
+                    values = running_mean(columns["time"], values, window)
+                ax.plot(columns["time"], values, label=model, linewidth=1.2)
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
     axes[0, 0].set_title(title)
@@ -57,7 +71,8 @@ def main():
     name = os.path.basename(os.path.normpath(out))
     plot_panels(out, models, "loads.csv",
                 [("all_bodies_drag", "drag [N]"), ("all_bodies_lift", "lift [N]")],
-                "compare_forces.png", f"{name}: the fluid's force on all the bodies")
+                "compare_forces.png",
+                f"{name}: the fluid's force on all the bodies (0.05 s running mean)", window=0.05)
     probes = next((read_columns(os.path.join(out, m, "probes.csv")) for m in models
                    if read_columns(os.path.join(out, m, "probes.csv"))), None)
     if probes:

@@ -40,6 +40,9 @@ template <int D>
 ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_radius,
                                 const BodyGeometry& bodies)
     : radius_(interaction_radius),
+      geometry_(&bodies),
+      wall_solids_(config.walls, D),
+      wall_band_(std::max(wall_layers(interaction_radius, config.spacing), 1) * config.spacing),
       body_points_(config.has_fluid() ? bodies.points_under_surface(std::max(
                                             wall_layers(interaction_radius, config.spacing), 1))
                                       : bodies.surface_points()),
@@ -130,10 +133,25 @@ void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_
   // The engine's own stage, ahead of the model's later ones: sort the particles by cell so
   // that neighbours sit close in memory.
   auto neighbours = make_stage<const StepClock>("neighbours", [this](const StepClock&) {
+    keep_out_of_walls();
     state_.cells.sort(state_.particles.position, order_);
     state_.particles.reorder(order_);
   });
   after_bodies.insert(after_bodies.begin() + start, std::move(neighbours));
+}
+
+template <int D>
+void ParticleFluid<D>::keep_out_of_walls() {
+  auto& ps = state_.particles;
+  exec::Default::for_each(ps.size(), [&](std::size_t i) {
+    if (!ps.is_fluid(i) || !wall_solids_.contains(to_3d<D>(ps.position[i]))) return;
+    const SurfacePoint p = geometry_->nearest_on_walls(to_3d<D>(ps.position[i]));
+    if (!(p.distance < 0) || p.distance < -wall_band_) return;
+    ps.position[i] = from_3d<D>(p.closest);
+    const Vec<D> normal = from_3d<D>(p.normal);
+    const Real inward = ps.velocity[i].dot(normal);
+    if (inward < 0) ps.velocity[i] -= inward * normal;
+  });
 }
 
 template <int D>

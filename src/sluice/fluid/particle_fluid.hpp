@@ -13,6 +13,7 @@
 #include "sluice/coupling/body_points.hpp"
 #include "sluice/fluid/fluid_system.hpp"
 #include "sluice/fluid/particle_state.hpp"
+#include "sluice/fluid/wall_solids.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice {
@@ -71,7 +72,17 @@ class ParticleFluid : public FluidSystem {
   // points (for the `body` array).
   static bool shown(const FieldLabel& label);
 
+  // Puts back on a wall's surface, with its velocity into the wall taken away, a fluid particle
+  // found within the wall's particle layers: one squeezed through where a body rests on the
+  // wall (the gap under a wheel is thinner than a spacing), which the layers' pressure alone
+  // does not always hold. Deeper than the layers it is left alone (a wall is a plane without
+  // end here, so a particle beyond its far side is not in it).
+  void keep_out_of_walls();
+
   Real radius_;
+  const BodyGeometry* geometry_;
+  WallSolids wall_solids_;
+  Real wall_band_;  // the walls' particle layers' thickness
   ParticleState<D> state_;
   BodyPoints body_points_;
   std::size_t body_count_ = 0;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -31,21 +32,39 @@ std::vector<double> probe_column(const CsvTable& table, const std::string& name,
   throw std::runtime_error(path + ": no column for the probe '" + name + "'");
 }
 
+// The largest of the running means of `values` over `window` seconds centred on each time:
+// a particle model's forces carry acoustic spikes from step to step that are not the load.
+double peak_of_running_mean(const std::vector<double>& time, const std::vector<double>& values,
+                            double window) {
+  double peak = -std::numeric_limits<double>::infinity();
+  std::size_t first = 0, last = 0;  // the rows within the window: [first, last)
+  double sum = 0;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    while (last < values.size() && time[last] <= time[k] + window / 2) sum += values[last++];
+    while (time[first] < time[k] - window / 2) sum -= values[first++];
+    peak = std::max(peak, sum / double(last - first));
+  }
+  return peak;
+}
+
 void add_loads(const std::string& path, int dimension, Measurements& out) {
   const CsvTable loads = read_csv_table(path);
-  const std::vector<double> time = column_of(loads, "time", path);
+  const std::vector<double> all_time = column_of(loads, "time", path);
   const std::string unit = dimension == 2 ? "N/m" : "N";
   for (const char* load : {"drag", "lift"}) {
     const std::vector<double> all = column_of(loads, std::string("all_bodies_") + load, path);
-    std::vector<double> later;  // the forces after t = 0, where they have been evaluated
+    std::vector<double> time, later;  // the forces after t = 0, where they have been evaluated
     for (std::size_t k = 0; k < all.size(); ++k) {
-      if (time[k] > 0) later.push_back(all[k]);
+      if (all_time[k] > 0) {
+        time.push_back(all_time[k]);
+        later.push_back(all[k]);
+      }
     }
     if (later.empty()) continue;
     const double mean = std::accumulate(later.begin(), later.end(), 0.0) / double(later.size());
     out.emplace_back(fmt::format("mean {} [{}]", load, unit), mean);
     out.emplace_back(fmt::format("peak {} [{}]", load, unit),
-                     *std::max_element(later.begin(), later.end()));
+                     peak_of_running_mean(time, later, kPeakWindow));
   }
 }
 

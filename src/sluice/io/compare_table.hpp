@@ -11,6 +11,9 @@
 
 namespace sluice::io {
 
+// The window of the running mean whose largest value is a load's peak [s].
+inline constexpr double kPeakWindow = 0.05;
+
 struct CompareResult {
   std::string model;
   std::string settings;  // the compare settings of its run, "; "-joined; "defaults" for none
@@ -22,10 +25,10 @@ struct CompareResult {
 // What the finished run in `run_dir` measured, from its stats.json, loads.csv (a case with
 // bodies) and probes.csv (a case with probes): `steps`, `wall [s]`, `wall per simulated s`;
 // `mean drag`, `peak drag`, `mean lift`, `peak lift` over the rows after t = 0 ([N], 2D
-// [N/m]); per probe of `probes`: a water height's rise above its start (`NAME rise [m]`), a
-// front's last position (`NAME end [m]`), a pressure's peak (`NAME peak [Pa]`). Sets
-// `result.elements` and `result.measurements`. Throws std::runtime_error naming a file that
-// cannot be read.
+// [N/m]; a peak is the largest running mean over kPeakWindow); per probe of `probes`: a water
+// height's rise above its start (`NAME rise [m]`), a front's last position (`NAME end [m]`), a
+// pressure's peak (`NAME peak [Pa]`). Sets `result.elements` and `result.measurements`. Throws
+// std::runtime_error naming a file that cannot be read.
 void read_compare_figures(const std::string& run_dir, const std::vector<ProbeConfig>& probes,
                           int dimension, CompareResult& result);
 

@@ -1,0 +1,62 @@
+// Fluid particles are kept out of the walls' solids (fluid/wall_solids.hpp and the particle
+// base's neighbour stage): which points lie in a wall, and a particle pushed into the floor is
+// put back on its surface without its velocity into the floor.
+#include <gtest/gtest.h>
+
+#include "sluice/fluid/particle_fluid.hpp"
+#include "sluice/fluid/wall_solids.hpp"
+#include "sluice/sim/simulation.hpp"
+
+namespace sluice {
+namespace {
+
+TEST(WallSolids, TankSidesBoxesAndPlanes) {
+  const io::CaseConfig c = io::parse_case(
+      "dimension: 3\nspacing: 0.1\ndomain: {min: [0, 0, 0], max: [2, 1, 2]}\nend_time: 1\n"
+      "output_interval: 0.1\nfluid:\n  blocks:\n    - {min: [0, 0, 0], max: [0.5, 1, 0.5]}\n"
+      "walls:\n  - {type: tank, min: [0, 0, 0], max: [2, 1, 1], open: [z+, x+]}\n"
+      "  - {type: box, min: [1, 0, 0], max: [1.2, 1, 0.3]}\n"
+      "  - {type: plane, point: [0, 0, 0.05], normal: [0, 0, 1]}\n"
+      "model: {name: wcsph}\n",
+      "walls.yaml");
+  const WallSolids solids(c.walls, 3);
+  EXPECT_FALSE(solids.contains(Vec3(0.5, 0.5, 0.5)));
+  EXPECT_TRUE(solids.contains(Vec3(-0.01, 0.5, 0.5)));  // behind x-
+  EXPECT_FALSE(solids.contains(Vec3(2.5, 0.5, 0.5)));   // x+ is open
+  EXPECT_FALSE(solids.contains(Vec3(0.5, 0.5, 1.5)));   // z+ is open
+  EXPECT_TRUE(solids.contains(Vec3(0.5, 1.01, 0.5)));   // behind y+
+  EXPECT_TRUE(solids.contains(Vec3(1.1, 0.5, 0.2)));    // in the box
+  EXPECT_FALSE(solids.contains(Vec3(1.1, 0.5, 0.35)));  // above it
+  EXPECT_TRUE(solids.contains(Vec3(0.5, 0.5, 0.04)));   // under the plane
+}
+
+TEST(WallContainment, AParticleInTheFloorIsPutBackOnItsSurface) {
+  const io::CaseConfig c = io::parse_case(
+      "dimension: 2\nspacing: 0.02\ndomain: {min: [0, 0], max: [0.4, 0.4]}\nend_time: 1\n"
+      "output_interval: 0.1\nfluid:\n  blocks:\n    - {min: [0, 0], max: [0.4, 0.1]}\n"
+      "walls:\n  - {type: tank, min: [0, 0], max: [0.4, 0.4], open: [z+]}\n"
+      "model: {name: wcsph}\n",
+      "floor.yaml");
+  Simulation<2> sim(c);
+  auto& fluid = dynamic_cast<ParticleFluid<2>&>(sim.fluid());
+  auto& ps = fluid.state().particles;
+  std::size_t pushed = ps.size();
+  for (std::size_t i = 0; i < ps.size() && pushed == ps.size(); ++i) {
+    if (ps.is_fluid(i) && ps.position[i][0] > 0.15 && ps.position[i][1] < 0.015) pushed = i;
+  }
+  ASSERT_LT(pushed, ps.size());
+  ps.position[pushed][1] = -0.012;  // within the floor's particle layers
+  ps.velocity[pushed] = Vec<2>(0.3, -1.0);
+  sim.step(1.0);
+  int below = 0, on_floor = 0;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (!ps.is_fluid(i)) continue;
+    below += ps.position[i][1] < 0;
+    on_floor += ps.position[i][1] == 0;
+  }
+  EXPECT_EQ(below, 0);
+  EXPECT_EQ(on_floor, 1);
+}
+
+}  // namespace
+}  // namespace sluice
