@@ -18,12 +18,10 @@ class WallSolids {
       switch (wall.shape) {
         case io::WallShape::kTank: {
           Tank tank{wall.box, {}};
-          static constexpr const char* kSides[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
           for (int axis = 0; axis < 3; ++axis) {
             for (int upper = 0; upper < 2; ++upper) {
-              tank.closed[axis][upper] = (dimension != 2 || axis != 1) &&
-                                         std::find(wall.open_sides.begin(), wall.open_sides.end(),
-                                                   kSides[axis][upper]) == wall.open_sides.end();
+              tank.closed[axis][upper] =
+                  (dimension != 2 || axis != 1) && !wall.side_open(axis, upper);
             }
           }
           tanks_.push_back(tank);

@@ -5,6 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -49,6 +50,12 @@ struct WallConfig {
   // of a driven cavity); the grid model (mac) alone honours it.
   Vec3 surface_velocity = Vec3::Zero();
   int line = 0;
+
+  // Whether a tank's side along `axis` (0 x, 1 y, 2 z), at its max (`upper`) or min, is open.
+  bool side_open(int axis, bool upper) const {
+    const std::string side = std::string(1, "xyz"[axis]) + (upper ? "+" : "-");  // no allocation
+    return std::find(open_sides.begin(), open_sides.end(), side) != open_sides.end();
+  }
 };
 
 enum class ProbeKind { kPressure, kWaterHeight, kSurgeFront };

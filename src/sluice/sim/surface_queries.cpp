@@ -67,11 +67,7 @@ SurfacePoint RigidBodies::nearest_on_walls(const Vec3& x) const {
         for (int axis = 0; axis < 3; ++axis) {
           if (dimension_ == 2 && axis == 1) continue;
           for (const bool upper : {false, true}) {
-            // Named without allocating: the fluid asks this for every particle and step.
-            static constexpr const char* kSides[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
-            if (std::find(wall.open_sides.begin(), wall.open_sides.end(), kSides[axis][upper]) !=
-                wall.open_sides.end())
-              continue;
+            if (wall.side_open(axis, upper)) continue;
             Vec3 normal = Vec3::Zero();
             normal[axis] = upper ? -1 : 1;
             keep(plane_surface(upper ? wall.box.max : wall.box.min, normal, x));

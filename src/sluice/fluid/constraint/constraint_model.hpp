@@ -91,8 +91,9 @@ class ConstraintModel final : public ParticleFluid<D> {
     BodyVelocities start;
     start.linear.assign(first + fluid, Vec3::Zero());
     start.angular.assign(first + fluid, Vec3::Zero());
+    // The case's bodies; the walls' contact bodies after them stand still.
     const std::vector<BodyKinematics> motion = bodies_->motion();
-    for (std::size_t b = 0; b < first; ++b) {
+    for (std::size_t b = 0; b < std::min(first, motion.size()); ++b) {
       start.linear[b] = motion[b].velocity;
       start.angular[b] = motion[b].angular_velocity;
     }

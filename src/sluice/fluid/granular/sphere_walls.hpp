@@ -20,9 +20,7 @@ class SphereWalls {
           for (int axis = 0; axis < 3; ++axis) {
             if (dimension == 2 && axis == 1) continue;
             for (const bool upper : {false, true}) {
-              const std::string side = std::string(1, "xyz"[axis]) + (upper ? "+" : "-");
-              if (std::find(w.open_sides.begin(), w.open_sides.end(), side) != w.open_sides.end())
-                continue;
+              if (w.side_open(axis, upper)) continue;
               Vec3 normal = Vec3::Zero();
               normal[axis] = upper ? -1 : 1;
               surfaces_.push_back({true, upper ? w.box.max : w.box.min, normal, Vec3::Zero()});
