@@ -38,7 +38,8 @@ double RigidSystem::solid_step(double dt) {
   return interaction_ ? interaction_->stable_step(bodies_, dt) : dt;
 }
 
-void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* participant) {
+void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* participant,
+                                   double stabilisation) {
   problem_.bodies.clear();
   for (const SystemBody& body : bodies_) {
     const RigidBody& s = body.state;
@@ -61,7 +62,7 @@ void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* part
   for (const ConstraintRow& row : joint_rows_.rows()) last.push_back(row.impulse);
   joint_rows_.clear();
   for (const Joint& joint : joints_) {
-    add_joint_rows(joint, bodies_, h, velocity_step_.stabilisation, joint_rows_);
+    add_joint_rows(joint, bodies_, h, stabilisation, joint_rows_);
   }
   joint_rows_.drop_inert(problem_.bodies);
   if (last.size() == joint_rows_.size()) {
@@ -122,7 +123,9 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::v
     }
     // Velocity constraints act on the velocity the bodies drift with, so that they hold the
     // positions too.
-    if (has_velocity_rows(participant)) solve_velocities(h, false, participant);
+    if (has_velocity_rows(participant)) {
+      solve_velocities(h, false, participant, velocity_step_.stabilisation);
+    }
     for (std::size_t b = 0; b < n; ++b) {
       if (!bodies_[b].fixed) drift(bodies_[b].state, h);
     }
@@ -137,6 +140,9 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::v
     for (std::size_t b = 0; b < n; ++b) {
       if (!bodies_[b].fixed) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
     }
+    // The last half kick leaves the joints: the velocities kept (which a fluid sees, and whose
+    // change it takes for the bodies' acceleration) are put back on them.
+    if (!joints_.empty()) solve_velocities(h, false, nullptr, 0.0);
     ++substeps_;
   }
   time_ += dt;
@@ -154,7 +160,7 @@ void RigidSystem::advance_complementarity(double h, const std::vector<Vec3>& for
     if (b < force.size()) f += force[b];
     kick(bodies_[b].state, f, b < torque.size() ? torque[b] : Vec3::Zero(), h);
   }
-  solve_velocities(h, true, participant);
+  solve_velocities(h, true, participant, velocity_step_.stabilisation);
   for (SystemBody& body : bodies_) {
     if (!body.fixed) drift(body.state, h);
   }

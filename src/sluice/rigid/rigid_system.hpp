@@ -93,8 +93,9 @@ class RigidSystem {
   void advance_complementarity(double dt, const std::vector<Vec3>& force,
                                const std::vector<Vec3>& torque, CcpParticipant* participant);
   // Meets the joints' and the participant's rows (and, with `contacts`, the contacts) for a
-  // step of h at the bodies' present velocities, which it replaces.
-  void solve_velocities(double h, bool contacts, CcpParticipant* participant);
+  // step of h at the bodies' present velocities, which it replaces. The joints take back
+  // `stabilisation` of their drift in the step (Baumgarte); 0 only projects the velocities.
+  void solve_velocities(double h, bool contacts, CcpParticipant* participant, double stabilisation);
   bool has_velocity_rows(const CcpParticipant* participant) const {
     return !joints_.empty() || participant != nullptr;
   }
