@@ -3,15 +3,16 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <spawn.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <map>
 #include <stdexcept>
+#include <thread>
 
 #include "sluice/core/errors.hpp"
 
@@ -109,6 +110,11 @@ std::vector<ChildOutcome> run_children(
     finished(k, outcomes[k]);
   }
   return outcomes;
+}
+
+int threads_per_run(int jobs) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, cores / std::max(1, jobs));
 }
 
 std::string this_program() {

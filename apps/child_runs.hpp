@@ -30,6 +30,9 @@ std::vector<ChildOutcome> run_children(
     const std::vector<ChildRun>& runs, int jobs,
     const std::function<void(std::size_t, const ChildOutcome&)>& finished);
 
+// The threads each of `jobs` runs at once gets: the cores shared out, at least one.
+int threads_per_run(int jobs);
+
 // This program's path, to start the runs with.
 std::string this_program();
 

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <thread>
 
 #include "child_runs.hpp"
 #include "sluice/core/errors.hpp"
@@ -37,9 +36,9 @@ int run_sweep(const SweepOptions& o) {
     throw InputError(out_dir + ": cannot create the output directory: " + error.message());
   }
 
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int jobs = std::clamp(o.jobs > 0 ? o.jobs : cores, 1, static_cast<int>(runs.size()));
-  const int threads = std::max(1, cores / jobs);
+  const int jobs =
+      std::clamp(o.jobs > 0 ? o.jobs : threads_per_run(1), 1, static_cast<int>(runs.size()));
+  const int threads = threads_per_run(jobs);
   fmt::print("sweep: {} runs of {} ({} at once, {} thread{} each) in {}\n", runs.size(),
              o.case_path, jobs, threads, threads > 1 ? "s" : "", out_dir);
 
