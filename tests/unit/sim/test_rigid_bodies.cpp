@@ -53,8 +53,9 @@ TEST(RigidBodies, OccupiesInsideAndWithinClearance) {
   EXPECT_TRUE(bodies.occupies(Vec3(0.5 + 0.13, 0.5, 0.5), 0));        // inside a turned corner
   EXPECT_FALSE(bodies.occupies(Vec3(0.5 + 0.1, 0.5 + 0.1, 0.5), 0));  // outside a turned face
   EXPECT_FALSE(bodies.occupies(Vec3(0.5, 0.5, 0.62), 0.01));
-  // The clearance counts from the surface particles: the nearest is 0.041 m away.
-  EXPECT_TRUE(bodies.occupies(Vec3(0.5, 0.5, 0.62), 0.045));
+  // The clearance counts from the face, not from its nearest particle (0.041 m away).
+  EXPECT_TRUE(bodies.occupies(Vec3(0.5, 0.5, 0.62), 0.025));
+  EXPECT_TRUE(bodies.occupies(Vec3(0.5, 0.5, 0.6), 0.001));  // on the face, between particles
 }
 
 TEST(RigidBodies, PrescribedBodyIsPlacedAtItsPose) {
