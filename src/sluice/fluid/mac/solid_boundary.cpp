@@ -32,6 +32,37 @@ Real open_fraction(const std::array<Real, (1 << (D - 1))>& corner) {
   }
 }
 
+// The fraction of a face's control volume (from one cell centre to the next along the face's
+// axis a, the face's extent across) outside the solid: the mean, over 4 (3D: 4 x 4) lines
+// along a through it, of each line's part outside, from the distance at its two ends. Batty,
+// Bertails & Bridson (2007) weight each face by this fraction. A solid's face lying across a
+// cell then loads the pressure in proportion to where it lies; the face-area fraction alone
+// sees it at the next cell face, and a held box's underside anywhere in a cell took the load
+// of the cell's centre (25 % short of the hydrostatic at 4 cells of depth).
+template <int D>
+Real control_volume_open_fraction(const Lattice<D>& nodes, const std::vector<Real>& distance,
+                                  const Vec<D>& face_centre, int axis, Real h) {
+  constexpr int kLines = 4;
+  constexpr int kAcross = D - 1;
+  int total = 1;
+  for (int k = 0; k < kAcross; ++k) total *= kLines;
+  Real open = 0;
+  for (int line = 0; line < total; ++line) {
+    Vec<D> x = face_centre;
+    int code = line;
+    for (int b = 0; b < D; ++b) {
+      if (b == axis) continue;
+      x[b] += ((code % kLines) + 0.5) / kLines * h - 0.5 * h;
+      code /= kLines;
+    }
+    Vec<D> lower = x, upper = x;
+    lower[axis] -= 0.5 * h;
+    upper[axis] += 0.5 * h;
+    open += positive_fraction(nodes.sample(distance, lower), nodes.sample(distance, upper));
+  }
+  return open / total;
+}
+
 }  // namespace
 
 template <int D>
@@ -119,7 +150,15 @@ void SolidBoundary<D>::fill_faces(const std::vector<BodyKinematics>& motion) {
         corner_node[k] = nodes.index(n);
         corner[k] = nodes_[corner_node[k]];
       }
-      Real open = open_fraction<D>(corner);
+      // Far from every solid (the control volume lies within 1.5 h of the corners): open.
+      const Real nearest = *std::min_element(corner.begin(), corner.end());
+      const Real farthest = *std::max_element(corner.begin(), corner.end());
+      Real open = nearest >= 1.5 * grid_.h    ? Real(1)
+                  : farthest < -1.5 * grid_.h ? Real(0)
+                                              : open_fraction<D>(corner);
+      const bool inside_grid = c[a] > 0 && c[a] < grid_.cells[a];
+      if (inside_grid && nearest < 1.5 * grid_.h && farthest >= -1.5 * grid_.h)
+        open = control_volume_open_fraction<D>(nodes, nodes_, centre, a, grid_.h);
       int body = -1;
       Vec<D> velocity = Vec<D>::Zero();
       if (c[a] == 0 || c[a] == grid_.cells[a]) {
