@@ -150,18 +150,19 @@ void SolidBoundary<D>::fill_faces(const std::vector<BodyKinematics>& motion) {
         corner_node[k] = nodes.index(n);
         corner[k] = nodes_[corner_node[k]];
       }
-      // Far from every solid (the control volume lies within 1.5 h of the corners): open.
+      // The control volume lies within 1.5 h of the corners: beyond that from every solid it
+      // is open, that deep inside one closed. On the grid's boundary it has no far side.
       const Real nearest = *std::min_element(corner.begin(), corner.end());
       const Real farthest = *std::max_element(corner.begin(), corner.end());
+      const bool on_boundary = c[a] == 0 || c[a] == grid_.cells[a];
       Real open = nearest >= 1.5 * grid_.h    ? Real(1)
                   : farthest < -1.5 * grid_.h ? Real(0)
-                                              : open_fraction<D>(corner);
-      const bool inside_grid = c[a] > 0 && c[a] < grid_.cells[a];
-      if (inside_grid && nearest < 1.5 * grid_.h && farthest >= -1.5 * grid_.h)
-        open = control_volume_open_fraction<D>(nodes, nodes_, centre, a, grid_.h);
+                  : on_boundary
+                      ? open_fraction<D>(corner)
+                      : control_volume_open_fraction<D>(nodes, nodes_, centre, a, grid_.h);
       int body = -1;
       Vec<D> velocity = Vec<D>::Zero();
-      if (c[a] == 0 || c[a] == grid_.cells[a]) {
+      if (on_boundary) {
         // On the grid's boundary: closed where a wall lies beyond, open to air elsewhere.
         Vec<D> beyond = centre;
         beyond[a] += (c[a] == 0 ? -0.5 : 0.5) * grid_.h;
