@@ -37,7 +37,7 @@ class BodyGeometry {
   virtual std::vector<Vec3> surface_normals() const = 0;
   virtual std::vector<double> surface_areas() const = 0;
   // Whether x lies inside a body or closer than `clearance` to its surface (to the face of the
-  // nearest surface particle, or to that particle).
+  // nearest surface particle).
   virtual bool occupies(const Vec3& x, double clearance) const = 0;
 
   // The nearest point of body b's surface to x (world), at the body's present pose: signed

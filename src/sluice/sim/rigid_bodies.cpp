@@ -299,11 +299,11 @@ bool RigidBodies::body_occupies(std::size_t b, const Vec3& x, double clearance) 
       (local.array() > local_max_[b].array() + clearance).any()) {
     return false;
   }
-  // Within the clearance of the face of the nearest surface particle, or of that particle (a
-  // point on a face midway between its particles is on the body, not dx/sqrt(2) from it).
-  const auto [closest, distance] = nearest_surface_particle(body, local);
-  return distance < clearance ||
-         (local - body.surface_position[closest]).dot(body.surface_normal[closest]) < clearance;
+  // Within the clearance of the face of the nearest surface particle (a point on a face midway
+  // between its particles is on the body, not dx/sqrt(2) from it; a point within the clearance
+  // of the particle itself is within it of the face too).
+  const std::size_t closest = nearest_surface_particle(body, local).first;
+  return (local - body.surface_position[closest]).dot(body.surface_normal[closest]) < clearance;
 }
 
 }  // namespace sluice
