@@ -9,6 +9,7 @@
 
 #include "child_runs.hpp"
 #include "compare_command.hpp"
+#include "option_checks.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
@@ -58,9 +59,9 @@ int main(int argc, char** argv) {
   run->add_option("CASE", case_path, "case file (YAML)")->required();
   run->add_option("--out", out_dir, "output directory (default: out/CASE_NAME)");
   run->add_option("--threads", threads, "number of threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(sluice::at_least_one());
   run->add_option("--end", end_time, "end time in seconds, overriding the case's end_time")
-      ->check(CLI::PositiveNumber);
+      ->check(sluice::positive_seconds());
   run->add_option("--set", overrides, "override a case key: key.path=value (repeatable)");
   run->add_option("--stats", stats_path, "write run statistics as JSON to this file");
 
@@ -80,9 +81,9 @@ int main(int argc, char** argv) {
   sweep->add_option("--out", sweep_options.out_dir,
                     "output directory (default: out/sweep_CASE_NAME)");
   sweep->add_option("--jobs", sweep_options.jobs, "runs at once (default: one per core)")
-      ->check(CLI::PositiveNumber);
+      ->check(sluice::at_least_one());
   sweep->add_option("--end", sweep_options.end_time, "end time of every run")
-      ->check(CLI::PositiveNumber);
+      ->check(sluice::positive_seconds());
 
   sluice::CompareOptions compare_options;
   CLI::App* compare = app.add_subcommand(
@@ -96,9 +97,9 @@ int main(int argc, char** argv) {
   compare->add_option("--out", compare_options.out_dir,
                       "output directory (default: out/compare_CASE_NAME)");
   compare->add_option("--jobs", compare_options.jobs, "runs at once (default: 1, for fair timings)")
-      ->check(CLI::PositiveNumber);
+      ->check(sluice::at_least_one());
   compare->add_option("--end", compare_options.end_time, "end time of every run")
-      ->check(CLI::PositiveNumber);
+      ->check(sluice::positive_seconds());
 
   try {
     app.parse(argc, argv);
