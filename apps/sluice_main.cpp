@@ -14,6 +14,7 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/runner.hpp"
+#include "sluice/sim/size_estimate.hpp"
 #include "sweep_command.hpp"
 
 namespace {
@@ -124,9 +125,11 @@ int main(int argc, char** argv) {
       const auto c = sluice::check_case(config);
       fmt::print(
           "{}: {}D case '{}' is valid\n  {}: {} ({} fluid, {} wall)\n  bodies: {} ({} "
-          "particles)\n  first time step: {:.4g} s\n  {}\n",
+          "particles)\n  memory: about {} (estimated from the geometry)\n  first time step: {:.4g} "
+          "s\n  {}\n",
           case_path, config.dimension, config.name, c.element_name, c.particles, c.fluid_particles,
-          c.wall_particles, c.bodies, c.body_particles, c.first_time_step, c.model);
+          c.wall_particles, c.bodies, c.body_particles, sluice::readable_bytes(c.estimated_bytes),
+          c.first_time_step, c.model);
       return sluice::kExitOk;
     }
     sluice::RunOptions options;

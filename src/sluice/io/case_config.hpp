@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sluice/core/types.hpp"
@@ -111,8 +112,9 @@ struct CaseConfig {
   std::shared_ptr<const YamlSource> source;  // file name and --set overrides
   std::string name;
   int dimension = 3;
-  double spacing = 0;  // initial particle spacing dx [m]
-  AxisBox domain;      // particles leaving it stop the run
+  double spacing = 0;                         // initial particle spacing dx [m]
+  std::pair<std::string, int> spacing_place;  // file (or --set) and line of `spacing`
+  AxisBox domain;                             // particles leaving it stop the run
   Vec3 gravity = Vec3(0, 0, -9.81);
   Vec3 travel_direction = Vec3::UnitX();  // unit, across gravity: the drag of OUT/loads.csv
   double end_time = 0;

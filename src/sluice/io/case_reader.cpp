@@ -170,6 +170,7 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   top.required<int>("dimension");
   c.name = top.optional<std::string>("name", std::filesystem::path(file_name).stem().string());
   c.spacing = top.required_positive("spacing");
+  c.spacing_place = top.place_of("spacing");
 
   MapReader domain = top.map("domain");
   c.domain = read_box(domain, c.dimension);

@@ -15,6 +15,7 @@
 #include "sluice/sim/frame_output.hpp"
 #include "sluice/sim/probes.hpp"
 #include "sluice/sim/simulation.hpp"
+#include "sluice/sim/size_estimate.hpp"
 
 namespace sluice {
 
@@ -29,7 +30,8 @@ double next_multiple(double time, double interval) {
 template <int D>
 RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // Build (and so validate) everything before creating the output directory: bad input
-  // must leave no directory behind.
+  // must leave no directory behind; and nothing is allocated for a case that cannot fit.
+  refuse_if_it_cannot_fit(config, estimate_size(config), machine_memory_bytes());
   Simulation<D> sim(config);
   FrameOutput frames(options.out_dir, config.name);
   BodyOutput body_output(options.out_dir, sim.bodies(), config.travel_direction, config.gravity, D);
@@ -130,6 +132,8 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
 
 template <int D>
 CheckSummary check(const io::CaseConfig& config) {
+  const SizeEstimate estimate = estimate_size(config);
+  refuse_if_it_cannot_fit(config, estimate, machine_memory_bytes());
   Simulation<D> sim(config);
   const FluidSize size = sim.fluid().size();
   CheckSummary out;
@@ -141,6 +145,7 @@ CheckSummary check(const io::CaseConfig& config) {
   out.first_time_step = sim.next_time_step();
   out.model = sim.fluid().describe();
   out.bodies = sim.bodies().count();
+  out.estimated_bytes = estimate.bytes;
   return out;
 }
 

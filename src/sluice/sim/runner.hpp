@@ -55,9 +55,11 @@ struct CheckSummary {
   double first_time_step = 0;
   std::string model;
   std::size_t bodies = 0;
+  double estimated_bytes = 0;  // from the geometry, before building (size_estimate.hpp)
 };
 
-// Builds the case's particles and model without running a step.
+// Builds the case's particles and model without running a step; first refuses (InputError at
+// `spacing`) a case whose estimated memory exceeds the machine's.
 CheckSummary check_case(const io::CaseConfig& config);
 
 // The statistics JSON written by --stats.

@@ -1,0 +1,74 @@
+// The size estimate made before anything is built: an upper bound on the particles (or cells)
+// the case builds, not far above them, and a refusal naming `spacing` when it cannot fit.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "sluice/core/errors.hpp"
+#include "sluice/io/case_config.hpp"
+#include "sluice/sim/runner.hpp"
+#include "sluice/sim/size_estimate.hpp"
+
+namespace sluice {
+namespace {
+
+io::CaseConfig tank_case(int dimension, const std::string& model, double spacing) {
+  const std::string box = dimension == 2 ? "[0, 0]" : "[0, 0, 0]";
+  const std::string far = dimension == 2 ? "[1.0, 0.6]" : "[1.0, 0.5, 0.6]";
+  const std::string water = dimension == 2 ? "[0.4, 0.3]" : "[0.4, 0.5, 0.3]";
+  const std::string size = dimension == 2 ? "[0.1, 0.1]" : "[0.1, 0.1, 0.1]";
+  const std::string at = dimension == 2 ? "[0.7, 0.1]" : "[0.7, 0.25, 0.1]";
+  return io::parse_case(
+      fmt::format("dimension: {}\nspacing: {}\ndomain: {{min: {}, max: {}}}\nend_time: 0.1\n"
+                  "output_interval: 0.1\nfluid:\n  blocks:\n    - {{min: {}, max: {}}}\n"
+                  "walls:\n  - {{type: tank, min: {}, max: {}, open: [z+]}}\n"
+                  "bodies:\n  - {{shape: box, size: {}, density: 500, position: {}}}\n"
+                  "model: {{name: {}}}\n",
+                  dimension, spacing, box, far, box, water, box, far, size, at, model),
+      "estimate.yaml");
+}
+
+TEST(SizeEstimate, BoundsTheBuiltCountFromAbove) {
+  for (int dimension : {2, 3}) {
+    for (const std::string model : {"wcsph", "mps", "mac"}) {
+      const io::CaseConfig config = tank_case(dimension, model, 0.05);
+      const SizeEstimate estimate = estimate_size(config);
+      const CheckSummary built = check_case(config);
+      SCOPED_TRACE(fmt::format("{}D {}: estimate {}, built {}", dimension, model, estimate.elements,
+                               built.particles));
+      EXPECT_EQ(estimate.element_name, built.element_name);
+      EXPECT_GE(estimate.elements, double(built.particles));
+      EXPECT_LE(estimate.elements, 2.5 * double(built.particles));
+      EXPECT_GT(estimate.bytes, estimate.elements * 100);
+    }
+  }
+}
+
+// Volumes (water, bodies) grow as the spacing to the power -3, wall layers as -2.
+TEST(SizeEstimate, AHundredthOfTheSpacingMultipliesTheCountBy1e4To1e6) {
+  const double coarse = estimate_size(tank_case(3, "wcsph", 0.05)).elements;
+  const double fine = estimate_size(tank_case(3, "wcsph", 0.0005)).elements;
+  EXPECT_GT(fine / coarse, 2e4);
+  EXPECT_LT(fine / coarse, 1e6);
+}
+
+TEST(SizeEstimate, RefusesACaseThatCannotFitAtItsSpacing) {
+  const io::CaseConfig config = tank_case(3, "wcsph", 0.0005);
+  const SizeEstimate estimate = estimate_size(config);
+  EXPECT_NO_THROW(refuse_if_it_cannot_fit(config, estimate, 2 * estimate.bytes));
+  try {
+    refuse_if_it_cannot_fit(config, estimate, 24e9);
+    FAIL() << "not refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "spacing");
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_NE(std::string(e.what()).find("this machine has 24 GB"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SizeEstimate, ReadableBytes) {
+  EXPECT_EQ(readable_bytes(950), "950 B");
+  EXPECT_EQ(readable_bytes(2.08e12), "2.08 TB");
+}
+
+}  // namespace
+}  // namespace sluice
