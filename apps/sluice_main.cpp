@@ -126,10 +126,11 @@ int main(int argc, char** argv) {
       fmt::print(
           "{}: {}D case '{}' is valid\n  {}: {} ({} fluid, {} wall)\n  bodies: {} ({} "
           "particles)\n  memory: about {} (estimated from the geometry)\n  first time step: {:.4g} "
-          "s\n  {}\n",
+          "s, limited by {}: about {:.3g} steps to the end time, {:.6g} s\n  {}\n",
           case_path, config.dimension, config.name, c.element_name, c.particles, c.fluid_particles,
           c.wall_particles, c.bodies, c.body_particles, sluice::readable_bytes(c.estimated_bytes),
-          c.first_time_step, c.model);
+          c.first_time_step, c.first_time_step_limit, config.end_time / c.first_time_step,
+          config.end_time, c.model);
       return sluice::kExitOk;
     }
     sluice::RunOptions options;

@@ -17,9 +17,10 @@ Coupler::Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* flu
   update_motion(0);
 }
 
-double Coupler::time_step(double fluid_dt) {
-  if (!fluid_) return fluid_dt;
-  return subcycling_ || bodies_ == 0 ? fluid_dt : system_.solid_step(fluid_dt);
+TimeStep Coupler::time_step(TimeStep fluid) {
+  if (!fluid_ || subcycling_ || bodies_ == 0) return fluid;
+  fluid.tighten(system_.solid_step(fluid.dt), "a contact's period (contact.subcycling is off)");
+  return fluid;
 }
 
 // Each body's kinematics; over a step of dt > 0 the accelerations are the change of velocity.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sluice/contact/multibody_system.hpp"
+#include "sluice/core/time_step.hpp"
 #include "sluice/coupling/fluid_exchange.hpp"
 
 namespace sluice {
@@ -23,8 +24,9 @@ class Coupler {
   // may be null (bodies alone). Both must outlive the coupler.
   Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling);
 
-  // The step the coupled system takes when the fluid asks for `fluid_dt`.
-  double time_step(double fluid_dt);
+  // The step the coupled system takes when the fluid asks for `fluid` (without sub-cycling, a
+  // contact's shorter step limits it).
+  TimeStep time_step(TimeStep fluid);
   // Advances the bodies by dt with the held loads, then hands the fluid their motion.
   void advance_bodies(double dt);
   // Takes the fluid's loads on the bodies, to hold over the next advance.

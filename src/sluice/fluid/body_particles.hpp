@@ -18,7 +18,7 @@ class BodyParticles final : public ParticleFluid<D> {
   std::string describe() const override { return "no fluid"; }
   // No stages: not even the neighbour sort.
   void append_stages(StageList&, StageList&) override {}
-  double next_time_step() const override { return std::numeric_limits<double>::infinity(); }
+  TimeStep next_time_step() const override { return {}; }
 
  protected:
   void model_stages(StageList&, StageList&) override {}

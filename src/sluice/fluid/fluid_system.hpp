@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sluice/core/stage.hpp"
+#include "sluice/core/time_step.hpp"
 #include "sluice/coupling/fluid_exchange.hpp"
 #include "sluice/io/vtk_writer.hpp"
 
@@ -42,8 +43,8 @@ class FluidSystem : public FluidExchange {
   // The model's stages, in order: `before_bodies` run ahead of the bodies' advance (e.g.
   // moving the particles), `after_bodies` after it (neighbours, forces, integration).
   virtual void append_stages(StageList& before_bodies, StageList& after_bodies) = 0;
-  // The stable step for the next step, from the state after the last one.
-  virtual double next_time_step() const = 0;
+  // The stable step for the next step, from the state after the last one, and what limits it.
+  virtual TimeStep next_time_step() const = 0;
 
   // Output (docs/output.md): the fluid as points with named arrays; a grid model: its free
   // surface, and its cells with theirs.

@@ -16,6 +16,7 @@
 #include "sluice/sim/probes.hpp"
 #include "sluice/sim/simulation.hpp"
 #include "sluice/sim/size_estimate.hpp"
+#include "sluice/sim/step_collapse.hpp"
 
 namespace sluice {
 
@@ -33,6 +34,12 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // must leave no directory behind; and nothing is allocated for a case that cannot fit.
   refuse_if_it_cannot_fit(config, estimate_size(config), machine_memory_bytes());
   Simulation<D> sim(config);
+  const double end_time = options.end_time.value_or(config.end_time);
+  const std::string model = config.has_fluid() ? config.model_name : "bodies-alone";
+  const TimeStep first = sim.next_time_step();
+  if (const auto collapsed = collapsed_step(first, first, 0, end_time, model)) {
+    throw DivergenceError(fmt::format("the run diverged at step 0, t = 0 s: {}", *collapsed));
+  }
   FrameOutput frames(options.out_dir, config.name);
   BodyOutput body_output(options.out_dir, sim.bodies(), config.travel_direction, config.gravity, D);
   FluidSystem& fluid = sim.fluid();
@@ -41,7 +48,6 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   escape_box.min.array() -= fluid.interaction_radius();
   escape_box.max.array() += fluid.interaction_radius();
   DivergenceGuard guard(escape_box, D);
-  const double end_time = options.end_time.value_or(config.end_time);
 
   RunSummary summary;
   summary.particles = fluid.size().elements;
@@ -51,9 +57,12 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.series_path = frames.series_path();
   summary.bodies = sim.bodies().count();
   if (!options.quiet) {
-    fmt::print(stderr, "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n",
+    fmt::print(stderr,
+               "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n  first time "
+               "step {:.3g} s, limited by {}: about {:.3g} steps to t = {:.6g} s\n",
                config.name, D, summary.particles, fluid.size().element_name,
-               summary.fluid_particles, summary.bodies, summary.threads, fluid.describe());
+               summary.fluid_particles, summary.bodies, summary.threads, fluid.describe(), first.dt,
+               first.limit, end_time / first.dt, end_time);
   }
 
   auto& timers = sim.timers();
@@ -81,6 +90,13 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     std::optional<std::string> problem;
     timers.time(guard_slot, [&] {
       problem = guard.check(sim.clock(), fluid, sim.bodies());
+      if (!problem) {
+        if (const auto collapsed =
+                collapsed_step(sim.last_stable_step(), first, t, end_time, model)) {
+          problem = fmt::format("the run diverged at step {}, t = {:.6g} s: {}", sim.clock().step,
+                                t, *collapsed);
+        }
+      }
       if (!problem) fluid.remember_good(t);
     });
     if (problem) {
@@ -142,7 +158,9 @@ CheckSummary check(const io::CaseConfig& config) {
   out.fluid_particles = size.fluid;
   out.body_particles = size.body;
   out.wall_particles = size.wall;
-  out.first_time_step = sim.next_time_step();
+  const TimeStep first = sim.next_time_step();
+  out.first_time_step = first.dt;
+  out.first_time_step_limit = first.limit;
   out.model = sim.fluid().describe();
   out.bodies = sim.bodies().count();
   out.estimated_bytes = estimate.bytes;

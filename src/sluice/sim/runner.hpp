@@ -53,6 +53,7 @@ struct CheckSummary {
   std::size_t wall_particles = 0;
   std::size_t body_particles = 0;
   double first_time_step = 0;
+  std::string first_time_step_limit;
   std::string model;
   std::size_t bodies = 0;
   double estimated_bytes = 0;  // from the geometry, before building (size_estimate.hpp)

@@ -27,15 +27,19 @@ Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& mod
 }
 
 template <int D>
-double Simulation<D>::next_time_step() {
+TimeStep Simulation<D>::next_time_step() {
   if (has_model()) return coupler_.time_step(fluid_->next_time_step());
   // Bodies alone: the multibody system sub-cycles within this step as contacts require.
-  return std::min({config_.output_interval, config_.body_interval, 1e-3});
+  TimeStep step;
+  step.tighten(std::min({config_.output_interval, config_.body_interval, 1e-3}),
+               "the output intervals (bodies alone sub-cycle within a step)");
+  return step;
 }
 
 template <int D>
 void Simulation<D>::step(double until) {
-  double dt = next_time_step();
+  last_step_ = next_time_step();
+  double dt = last_step_.dt;
   // Stretch or shorten the last steps slightly so that the run ends exactly at `until`.
   const double remaining = until - clock_.time;
   if (remaining < 1.5 * dt) dt = remaining <= dt * (1 + 1e-9) ? remaining : 0.5 * remaining;

@@ -26,7 +26,10 @@ class Simulation {
 
   // Advances by one step of the model's stable size, clipped so as not to pass `until`.
   void step(double until);
-  double next_time_step();
+  // The stable step from the present state, and what limits it.
+  TimeStep next_time_step();
+  // The stable step the last step() found (before clipping to `until`).
+  const TimeStep& last_stable_step() const { return last_step_; }
 
   const StepClock& clock() const { return clock_; }
   double time() const { return clock_.time; }
@@ -54,6 +57,7 @@ class Simulation {
   StageTimers timers_;
   std::vector<std::size_t> slots_;
   StepClock clock_;
+  TimeStep last_step_;
 };
 
 }  // namespace sluice

@@ -113,9 +113,13 @@ TEST(Coupler, WithoutSubCyclingTheFluidTakesTheSolidStep) {
   system.add(make_floor_patch(0.2, 0.01, ContactMaterial{}));
   ConstantPush fluid(Vec3::Zero());
   Coupler cycled(system, 1, &fluid, true), lockstep(system, 1, &fluid, false);
-  EXPECT_EQ(cycled.time_step(1e-3), 1e-3);
-  EXPECT_LT(lockstep.time_step(1e-3), 0.5e-3);
-  EXPECT_EQ(lockstep.time_step(1e-3), system.solid_step(1e-3));
+  const TimeStep fluid_step{1e-3, "the fluid"};
+  EXPECT_EQ(cycled.time_step(fluid_step).dt, 1e-3);
+  EXPECT_STREQ(cycled.time_step(fluid_step).limit, "the fluid");
+  EXPECT_LT(lockstep.time_step(fluid_step).dt, 0.5e-3);
+  EXPECT_EQ(lockstep.time_step(fluid_step).dt, system.solid_step(1e-3));
+  EXPECT_STREQ(lockstep.time_step(fluid_step).limit,
+               "a contact's period (contact.subcycling is off)");
 }
 
 // The monolithic scheme: a fluid whose surface at z = 0.5 bodies cannot sink through adds a

@@ -30,7 +30,7 @@ class StillWater final : public ParticleFluid<D> {
   std::string describe() const override {
     return fmt::format("still_water: time step {} s", time_step_);
   }
-  double next_time_step() const override { return time_step_; }
+  TimeStep next_time_step() const override { return {time_step_, "the test's fixed step"}; }
 
  protected:
   void model_stages(StageList&, StageList& after_neighbours) override {

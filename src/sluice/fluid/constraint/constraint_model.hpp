@@ -69,9 +69,15 @@ class ConstraintModel final : public ParticleFluid<D> {
     build_rows();
   }
 
-  double next_time_step() const override {
-    if (p_.time_step > 0) return p_.time_step;
-    return p_.cfl * dx_ / std::max(max_speed_, 0.1 * p_.max_speed);
+  TimeStep next_time_step() const override {
+    TimeStep step;
+    if (p_.time_step > 0) {
+      step.tighten(p_.time_step, "model.time_step");
+    } else {
+      step.tighten(p_.cfl * dx_ / std::max(max_speed_, 0.1 * p_.max_speed),
+                   "the flow speed (or a tenth of model.max_speed)");
+    }
+    return step;
   }
 
   CouplingScheme scheme() const override { return CouplingScheme::kMonolithic; }

@@ -75,13 +75,18 @@ class GranularModel final : public ParticleFluid<D> {
   }
 
   // A sphere moves at most cfl radii a step: at its speed, or falling from rest.
-  double next_time_step() const override {
-    if (p_.time_step > 0) return p_.time_step;
+  TimeStep next_time_step() const override {
+    TimeStep step;
+    if (p_.time_step > 0) {
+      step.tighten(p_.time_step, "model.time_step");
+      return step;
+    }
     const double travel = p_.cfl * p_.radius;
     const double g = this->state().gravity.norm();
-    double dt = max_speed_ > 0 ? travel / max_speed_ : std::numeric_limits<double>::infinity();
-    if (g > 0) dt = std::min(dt, std::sqrt(2 * travel / g));
-    return std::min(dt, travel / (0.01 * p_.max_speed));
+    if (max_speed_ > 0) step.tighten(travel / max_speed_, "the spheres' speed");
+    if (g > 0) step.tighten(std::sqrt(2 * travel / g), "gravity");
+    step.tighten(travel / (0.01 * p_.max_speed), "a hundredth of model.max_speed");
+    return step;
   }
 
   CouplingScheme scheme() const override { return CouplingScheme::kMonolithic; }

@@ -204,7 +204,7 @@ void MacModel<D>::extend() {
 }
 
 template <int D>
-double MacModel<D>::next_time_step() const {
+TimeStep MacModel<D>::next_time_step() const {
   Real fastest = 0;
   for (int a = 0; a < D; ++a) {
     fastest = std::max(fastest, exec::Default::max_of(now_.u[a].size(), [&](std::size_t f) {
@@ -213,10 +213,11 @@ double MacModel<D>::next_time_step() const {
   }
   // What gravity adds over a step, after Bridson's "Fluid Simulation for Computer Graphics".
   fastest += std::sqrt(5 * grid_.h * gravity_.norm());
-  double dt = fastest > 0 ? p_.cfl * grid_.h / fastest : std::numeric_limits<double>::infinity();
-  if (viscosity_ > 0) dt = std::min(dt, 0.9 * grid_.h * grid_.h / (2 * D * viscosity_));
-  if (p_.max_time_step > 0) dt = std::min(dt, p_.max_time_step);
-  return dt;
+  TimeStep step;
+  if (fastest > 0) step.tighten(p_.cfl * grid_.h / fastest, "the flow speed and gravity");
+  if (viscosity_ > 0) step.tighten(0.9 * grid_.h * grid_.h / (2 * D * viscosity_), "the viscosity");
+  if (p_.max_time_step > 0) step.tighten(p_.max_time_step, "model.max_time_step");
+  return step;
 }
 
 template <int D>

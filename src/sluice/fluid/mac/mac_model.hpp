@@ -29,7 +29,7 @@ class MacModel : public FluidSystem {
 
   std::string describe() const override;
   void append_stages(StageList& before_bodies, StageList& after_bodies) override;
-  double next_time_step() const override;
+  TimeStep next_time_step() const override;
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override;
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override;
 

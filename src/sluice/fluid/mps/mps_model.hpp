@@ -77,15 +77,21 @@ class MpsModel final : public ParticleFluid<D> {
     measure_extremes();
   }
 
-  double next_time_step() const override {
+  TimeStep next_time_step() const override {
     const ParticleState<D>& s = this->state();
     const Real l0 = s.spacing;
-    double dt = explicit_variant() ? p_.cfl * l0 / (p_.sound_speed + max_speed_)
-                                   : p_.cfl * l0 / std::max(max_speed_, p_.max_speed);
+    TimeStep step;
+    if (explicit_variant()) {
+      step.tighten(p_.cfl * l0 / (p_.sound_speed + max_speed_),
+                   "the speed of sound and the flow speed");
+    } else {
+      step.tighten(p_.cfl * l0 / std::max(max_speed_, p_.max_speed),
+                   "the flow speed (at least model.max_speed, from gravity and depth)");
+    }
     const Real nu = s.kinematic_viscosity +
                     (explicit_variant() ? p_.artificial_viscosity * p_.sound_speed * l0 : 0);
-    if (nu > 0) dt = std::min(dt, 0.125 * l0 * l0 / nu);
-    return dt;
+    if (nu > 0) step.tighten(0.125 * l0 * l0 / nu, "the viscosity");
+    return step;
   }
 
   std::vector<std::pair<std::string, double>> counters() const override {

@@ -93,20 +93,26 @@ class PenaltySphModel final : public ParticleFluid<D> {
     measure_extremes();
   }
 
-  double next_time_step() const override {
-    if (p_.time_step > 0) return p_.time_step;
+  TimeStep next_time_step() const override {
+    TimeStep step;
+    if (p_.time_step > 0) {
+      step.tighten(p_.time_step, "model.time_step");
+      return step;
+    }
     const Real h = kernels_.h;
     const Real c0 = std::sqrt(p_.gas_stiffness);
-    double dt = p_.cfl * h / (c0 + max_speed_);
-    if (max_acceleration_ > 0) dt = std::min(dt, p_.cfl * std::sqrt(h / max_acceleration_));
+    step.tighten(p_.cfl * h / (c0 + max_speed_), "the speed of sound and the flow speed");
+    if (max_acceleration_ > 0)
+      step.tighten(p_.cfl * std::sqrt(h / max_acceleration_), "the largest acceleration");
     const Real nu = viscosity_ / rest_density_;
-    if (nu > 0) dt = std::min(dt, 0.125 * h * h / nu);
+    if (nu > 0) step.tighten(0.125 * h * h / nu, "the viscosity");
     // Capillary waves (Brackbill, Kothe & Zemach 1992): dt < sqrt(rho h^3 / (2 pi sigma)).
     if (p_.surface_tension > 0) {
-      dt = std::min(
-          dt, std::sqrt(rest_density_ * h * h * h / (2 * std::numbers::pi * p_.surface_tension)));
+      step.tighten(
+          std::sqrt(rest_density_ * h * h * h / (2 * std::numbers::pi * p_.surface_tension)),
+          "the surface tension");
     }
-    return dt;
+    return step;
   }
 
   std::vector<std::pair<std::string, double>> counters() const override {

@@ -75,13 +75,16 @@ class WcsphModel final : public ParticleFluid<D> {
   FieldHandle<Real> density_rate_field() const { return density_rate_; }
   FieldHandle<Vec<D>> wall_velocity_field() const { return wall_velocity_; }
 
-  double next_time_step() const override {
+  TimeStep next_time_step() const override {
     const ParticleState<D>& s = this->state();
     const Real h = kernel_.h;
-    double dt = p_.cfl * h / (eos_.c0 + max_speed_);
-    if (max_acceleration_ > 0) dt = std::min(dt, p_.force_cfl * std::sqrt(h / max_acceleration_));
-    if (s.kinematic_viscosity > 0) dt = std::min(dt, 0.125 * h * h / s.kinematic_viscosity);
-    return dt;
+    TimeStep step;
+    step.tighten(p_.cfl * h / (eos_.c0 + max_speed_), "the speed of sound and the flow speed");
+    if (max_acceleration_ > 0)
+      step.tighten(p_.force_cfl * std::sqrt(h / max_acceleration_), "the largest acceleration");
+    if (s.kinematic_viscosity > 0)
+      step.tighten(0.125 * h * h / s.kinematic_viscosity, "the viscosity");
+    return step;
   }
 
  private:
