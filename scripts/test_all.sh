@@ -2,8 +2,9 @@
 # Sets up (Debian packages), builds, and runs every test: the release build's unit, physics,
 # command-line and output tests; the physics checks again in a portable build for x86-64-v2
 # (4-wide SSE, no FMA: other rounding than the release build's AVX2, so a check whose margin
-# is too thin for another processor fails here); the unit and command-line tests under
-# AddressSanitizer + UndefinedBehaviorSanitizer; and a formatting check.
+# is too thin for another processor fails here); the input readers under libFuzzer (clang); the
+# unit and command-line tests under AddressSanitizer + UndefinedBehaviorSanitizer; and a
+# formatting check.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -29,6 +30,13 @@ echo "== baseline build (x86-64-v2) and the physics checks but the five slowest"
 cmake --preset baseline
 cmake --build --preset baseline -j "$jobs" --target physics_tests
 ctest --preset baseline -j "$jobs"
+
+# The readers of cases, meshes and motion tables under libFuzzer, 15 s each from their seeds
+# (scripts/fuzz.sh runs them longer).
+echo "== fuzz build (clang, asan + ubsan) and the fuzzers, 15 s each"
+cmake --preset fuzz -DFUZZ_SECONDS=15
+cmake --build --preset fuzz -j "$jobs"
+ctest --preset fuzz -j "$jobs"
 
 echo "== sanitizer build (asan + ubsan) and its tests (physics excluded: too slow there)"
 cmake --preset asan

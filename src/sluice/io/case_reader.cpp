@@ -105,7 +105,7 @@ std::vector<CompareEntry> read_compare(MapReader& top) {
   const YAML::Node all = top.node("compare");
   for (const auto& item : all) {
     CompareEntry entry;
-    entry.model = item.first.as<std::string>();
+    entry.model = compare.key_name(item.first);
     entry.line = line_of(item.first);
     const YAML::Node settings = compare.node(entry.model);
     if (!settings.IsNull() && !settings.IsMap()) {
@@ -114,7 +114,7 @@ std::vector<CompareEntry> read_compare(MapReader& top) {
     for (const auto& setting : settings) {
       YAML::Emitter value;
       value << YAML::Flow << setting.second;
-      const std::string key = setting.first.as<std::string>();
+      const std::string key = compare.key_name(setting.first);
       entry.settings.push_back(key + "=" + value.c_str());
       entry.sets_model = entry.sets_model || key == "model";
     }
@@ -137,17 +137,10 @@ AxisBox read_box(MapReader& map, int dimension) {
   return box;
 }
 
-CaseConfig parse_case(const std::string& text, const std::string& file_name,
-                      const std::vector<std::string>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file_name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
-  }
-  if (!root.IsDefined() || root.IsNull())
-    throw InputError(file_name, 1, "", "the case file is empty");
+namespace {
 
+CaseConfig read_root(YAML::Node root, const std::string& file_name,
+                     const std::vector<std::string>& overrides) {
   auto source = std::make_shared<YamlSource>();
   source->file = file_name;
   if (root.IsMap()) {
@@ -246,6 +239,28 @@ CaseConfig parse_case(const std::string& text, const std::string& file_name,
   }
   top.finish();
   return c;
+}
+
+}  // namespace
+
+CaseConfig parse_case(const std::string& text, const std::string& file_name,
+                      const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull())
+    throw InputError(file_name, 1, "", "the case file is empty");
+  try {
+    return read_root(root, file_name, overrides);
+  } catch (const YAML::Exception& e) {
+    // The readers check every node's kind before converting it; this is the net under them,
+    // so that no input ends in an uncaught exception (tests/fuzz).
+    throw InputError(file_name, e.mark.is_null() ? 0 : e.mark.line + 1, "",
+                     "cannot read this YAML: " + e.msg);
+  }
 }
 
 CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides) {

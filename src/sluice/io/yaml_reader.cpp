@@ -281,10 +281,19 @@ std::vector<MapReader> MapReader::list_of_maps(const std::string& key) {
   return out;
 }
 
+std::string MapReader::key_name(const YAML::Node& key) const {
+  if (key.IsScalar()) return key.Scalar();
+  const std::string file = file_for(path_);
+  const int line = line_for(file, io::line_of(key) > 0 ? io::line_of(key) : line_);
+  const char* what = key.IsSequence() ? "a list" : key.IsMap() ? "a mapping" : "nothing";
+  throw InputError(file, line, path_.empty() ? "(top level)" : path_,
+                   fmt::format("a key must be a name, found {}", what));
+}
+
 void MapReader::finish() const {
   std::vector<std::string> known(asked_.begin(), asked_.end());
   for (const auto& entry : node_) {
-    const std::string key = entry.first.as<std::string>();
+    const std::string key = key_name(entry.first);
     if (used_.count(key)) continue;
     const std::string full = path_of(key);
     const std::string file = file_for(full);

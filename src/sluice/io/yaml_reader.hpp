@@ -54,6 +54,9 @@ class MapReader {
 
   // Reports the first key that was never read, suggesting the closest key asked for.
   void finish() const;
+  // The text of a key of this mapping, or an InputError when it is not one (a list, a mapping,
+  // or nothing, as `{[a]: 1}` or `{!x : 1}` write).
+  std::string key_name(const YAML::Node& key) const;
 
   // A text that must be one of `choices`; `what` names it in the message of fail_choice.
   std::string optional_choice(const std::string& key, const std::string& fallback,
