@@ -96,10 +96,14 @@ SizeEstimate estimate_size(const io::CaseConfig& config) {
         case io::WallShape::kBox:
           out.elements += measure(inside, dim) / cell_volume;
           break;
-        case io::WallShape::kPlane:
+        case io::WallShape::kPlane: {
+          // A plane's cut through the domain is at most sqrt(D) times its largest face (the
+          // cut's projection on the face it is most parallel to fits in that face).
+          const double thinnest = dim == 2 ? std::min(domain[0], domain[2]) : domain.minCoeff();
           out.elements +=
-              measure(domain, dim) / domain.head(dim == 2 ? 1 : 2).minCoeff() * shell / cell_volume;
+              std::sqrt(double(dim)) * measure(domain, dim) / thinnest * shell / cell_volume;
           break;
+        }
       }
     }
     for (const auto& body : config.bodies) out.elements += body_volume(body, dim) / cell_volume;

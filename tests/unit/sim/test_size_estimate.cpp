@@ -11,7 +11,9 @@
 namespace sluice {
 namespace {
 
-io::CaseConfig tank_case(int dimension, const std::string& model, double spacing) {
+// The water in a tank (or, with `plane`, on a floor plane), with a box floating on it.
+io::CaseConfig tank_case(int dimension, const std::string& model, double spacing,
+                         bool plane = false) {
   const std::string box = dimension == 2 ? "[0, 0]" : "[0, 0, 0]";
   const std::string far = dimension == 2 ? "[1.0, 0.6]" : "[1.0, 0.5, 0.6]";
   const std::string water = dimension == 2 ? "[0.4, 0.3]" : "[0.4, 0.5, 0.3]";
@@ -20,25 +22,32 @@ io::CaseConfig tank_case(int dimension, const std::string& model, double spacing
   return io::parse_case(
       fmt::format("dimension: {}\nspacing: {}\ndomain: {{min: {}, max: {}}}\nend_time: 0.1\n"
                   "output_interval: 0.1\nfluid:\n  blocks:\n    - {{min: {}, max: {}}}\n"
-                  "walls:\n  - {{type: tank, min: {}, max: {}, open: [z+]}}\n"
+                  "walls:\n  - {}\n"
                   "bodies:\n  - {{shape: box, size: {}, density: 500, position: {}}}\n"
                   "model: {{name: {}}}\n",
-                  dimension, spacing, box, far, box, water, box, far, size, at, model),
+                  dimension, spacing, box, far, box, water,
+                  plane ? fmt::format("{{type: plane, point: {}, normal: {}}}", box,
+                                      dimension == 2 ? "[0, 1]" : "[0, 0, 1]")
+                        : fmt::format("{{type: tank, min: {}, max: {}, open: [z+]}}", box, far),
+                  size, at, model),
       "estimate.yaml");
 }
 
 TEST(SizeEstimate, BoundsTheBuiltCountFromAbove) {
   for (int dimension : {2, 3}) {
     for (const std::string model : {"wcsph", "mps", "mac"}) {
-      const io::CaseConfig config = tank_case(dimension, model, 0.05);
-      const SizeEstimate estimate = estimate_size(config);
-      const CheckSummary built = check_case(config);
-      SCOPED_TRACE(fmt::format("{}D {}: estimate {}, built {}", dimension, model, estimate.elements,
-                               built.particles));
-      EXPECT_EQ(estimate.element_name, built.element_name);
-      EXPECT_GE(estimate.elements, double(built.particles));
-      EXPECT_LE(estimate.elements, 2.5 * double(built.particles));
-      EXPECT_GT(estimate.bytes, estimate.elements * 100);
+      for (const bool plane : {false, true}) {
+        if (plane && model == "mac") continue;  // the grid model's walls are its grid's sides
+        const io::CaseConfig config = tank_case(dimension, model, 0.05, plane);
+        const SizeEstimate estimate = estimate_size(config);
+        const CheckSummary built = check_case(config);
+        SCOPED_TRACE(fmt::format("{}D {}{}: estimate {}, built {}", dimension, model,
+                                 plane ? " on a plane" : "", estimate.elements, built.particles));
+        EXPECT_EQ(estimate.element_name, built.element_name);
+        EXPECT_GE(estimate.elements, double(built.particles));
+        EXPECT_LE(estimate.elements, 2.5 * double(built.particles));
+        EXPECT_GT(estimate.bytes, estimate.elements * 100);
+      }
     }
   }
 }
