@@ -51,14 +51,18 @@ void print_summary(const sluice::RunSummary& r) {
 int main(int argc, char** argv) {
   CLI::App app{"sluice: free-surface flow with rigid bodies (particle methods)"};
   app.require_subcommand(1);
-  std::string case_path, out_dir, stats_path;
+  std::string case_path, out_dir, stats_path, resume_dir;
   std::vector<std::string> overrides;
   int threads = 0;
   double end_time = 0;
 
   CLI::App* run = app.add_subcommand("run", "run a case");
   run->add_option("CASE", case_path, "case file (YAML)")->required();
-  run->add_option("--out", out_dir, "output directory (default: out/CASE_NAME)");
+  CLI::Option* out_option =
+      run->add_option("--out", out_dir, "output directory (default: out/CASE_NAME)");
+  run->add_option("--resume", resume_dir,
+                  "continue the run in this output directory from its newest checkpoint")
+      ->excludes(out_option);
   run->add_option("--threads", threads, "number of threads (default: all cores)")
       ->check(sluice::at_least_one());
   run->add_option("--end", end_time, "end time in seconds, overriding the case's end_time")
@@ -134,7 +138,10 @@ int main(int argc, char** argv) {
       return sluice::kExitOk;
     }
     sluice::RunOptions options;
-    options.out_dir = out_dir.empty() ? "out/" + config.name : out_dir;
+    options.out_dir = !resume_dir.empty() ? resume_dir
+                      : out_dir.empty()   ? "out/" + config.name
+                                          : out_dir;
+    options.resume = !resume_dir.empty();
     if (end_time > 0) options.end_time = end_time;
     options.stats_path = stats_path;
     options.live_progress = isatty(fileno(stderr)) != 0;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
 
 namespace sluice {
@@ -22,5 +23,10 @@ struct ConstraintRow {
   double upper = std::numeric_limits<double>::infinity();
   double impulse = 0;  // the solution: lambda [N s]
 };
+
+inline void archive_state(StateArchive& a, ConstraintRow& r) {
+  a(r.a, r.b, r.linear_a, r.angular_a, r.linear_b, r.angular_b, r.bias, r.lower, r.upper,
+    r.impulse);
+}
 
 }  // namespace sluice

@@ -52,6 +52,11 @@ class RowGroup final : public ConstraintGroup {
   void warm_start(std::span<Real> gamma) const override;
   void store(std::span<const Real> gamma) override;
 
+  void archive_state(StateArchive& a) {
+    a(rows_);
+    a(blocks_);
+  }
+
  private:
   struct Block {
     std::size_t first = 0;
@@ -59,6 +64,9 @@ class RowGroup final : public ConstraintGroup {
     Real friction = 0, cohesion = 0;
     std::uint64_t key = 0;
     Real slip_correction = 0;  // mu |u_t| added to the normal row's bias
+    void archive_state(StateArchive& a) {
+      a(first, cone, friction, cohesion, key, slip_correction);
+    }
   };
   std::vector<ConstraintRow> rows_;
   std::vector<Block> blocks_;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sluice/ccp/constraint_group.hpp"
+#include "sluice/core/state_archive.hpp"
 
 namespace sluice {
 
@@ -33,6 +34,9 @@ class SphereContacts final : public ConstraintGroup {
     Real radius_a = 0, radius_b = 0;  // from each centre to the contact point, along n
     Real target = 0;                  // the least normal velocity [m/s]
   };
+  friend void archive_state(StateArchive& a, Contact& c) {
+    a(c.a, c.b, c.owner, c.partner, c.normal, c.radius_a, c.radius_b, c.target);
+  }
 
   // Starts a step: the spheres are bodies [first, first + count) of the problem, each known by
   // an identity below `identities`; friction mu, cohesion c [N s] and rolling friction mu_r
@@ -60,6 +64,12 @@ class SphereContacts final : public ConstraintGroup {
   void diagonal(const CcpBodies& bodies, std::span<Real> out) const override;
   void warm_start(std::span<Real> gamma) const override;
   void store(std::span<const Real> gamma) override;
+
+  // Checkpoints: the last step's contacts and impulses, which the next step's warm start
+  // reads, with the settings that shape them.
+  void archive_state(StateArchive& a) {
+    a(first_, count_, identities_, friction_, cohesion_, rolling_friction_, contacts_, impulse_);
+  }
 
  private:
   // The last step's impulses, listed by owner identity: [offsets[id], offsets[id + 1]).

@@ -40,6 +40,14 @@ class ContactPipeline final : public BodyInteraction {
                            RowGroup& rows) override;
   void remember_contact_impulses(const RowGroup& rows) override;
 
+  // Checkpoints: the contacts with their histories, the last impulses, the solver's state (the
+  // bodies' places and the candidate pairs are found anew each call).
+  void archive_state(StateArchive& a) {
+    a.section("contacts");
+    a(contacts_, last_impulses_);
+    solver_->archive_state(a);
+  }
+
  private:
   void place(const std::vector<SystemBody>& bodies);
   // The broad phase's pairs, each body's box grown by `growth` (may be empty) and then by

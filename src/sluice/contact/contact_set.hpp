@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
 
 namespace sluice {
@@ -35,6 +36,13 @@ struct Contact {
   Vec3 tangential = Vec3::Zero();  // accumulated tangential displacement (Mindlin)
 };
 
+inline void archive_state(StateArchive& a, ParticlePair& p) {
+  a(p.point, p.normal, p.overlap, p.area);
+}
+inline void archive_state(StateArchive& a, Contact& c) {
+  a(c.a, c.b, c.id, c.overlap, c.area, c.weight, c.point, c.normal, c.pairs, c.tangential);
+}
+
 class ContactSet {
  public:
   // Starts a pass: the contacts found so far become the last pass's.
@@ -46,6 +54,10 @@ class ContactSet {
 
   std::vector<Contact>& contacts() { return contacts_; }
   const std::vector<Contact>& contacts() const { return contacts_; }
+
+  // Checkpoints: the contacts in their order (the next pass takes over their identities and
+  // springs) and the next identity.
+  void archive_state(StateArchive& a) { a(contacts_, next_id_); }
 
  private:
   static std::uint64_t key(std::size_t a, std::size_t b) { return (std::uint64_t(a) << 32) | b; }

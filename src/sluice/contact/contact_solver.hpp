@@ -23,6 +23,8 @@ class ContactSolver {
                            const std::vector<ContactShape>& shapes) = 0;
   // The energy stored in the contacts at the last solve.
   virtual double stored_energy() const = 0;
+  // Checkpoints: what the solver carries from one solve to the next.
+  virtual void archive_state(StateArchive& a) = 0;
 };
 
 }  // namespace sluice

@@ -55,6 +55,12 @@ class MultibodySystem {
   long substeps_taken() const { return rigid_.substeps_taken(); }
   const RigidSystem& rigid() const { return rigid_; }
 
+  // Checkpoints: the bodies and their contacts.
+  void archive_state(StateArchive& a) {
+    rigid_.archive_state(a);
+    contact_->archive_state(a);
+  }
+
  private:
   // On the heap, so that the rigid system's pointer to it survives moving the system.
   std::unique_ptr<ContactPipeline> contact_;

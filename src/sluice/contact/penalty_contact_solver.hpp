@@ -27,6 +27,11 @@ class PenaltyContactSolver final : public ContactSolver {
                    const std::vector<SystemBody>& bodies,
                    const std::vector<ContactShape>& shapes) override;
   double stored_energy() const override { return elastic_energy_; }
+  // The deepest overlap of the last solve sizes the next sub-step; the laws and the damping
+  // table are caches of pure functions of the case.
+  void archive_state(StateArchive& a) override {
+    a(elastic_energy_, deepest_overlap_, deepest_overlap_ever_);
+  }
   // The deepest overlap at any solve so far.
   double deepest_overlap_ever() const { return deepest_overlap_ever_; }
 

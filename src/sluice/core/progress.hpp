@@ -9,7 +9,9 @@ namespace sluice {
 
 class ProgressReporter {
  public:
-  ProgressReporter(double end_time, std::FILE* stream, bool live, double plain_interval = 10.0);
+  // `start_time`: where the run starts (a resumed run: its checkpoint's time), for the ETA.
+  ProgressReporter(double end_time, std::FILE* stream, bool live, double plain_interval = 10.0,
+                   double start_time = 0);
 
   // Prints when enough wall time has passed since the last line.
   void update(double sim_time, long steps, double particle_steps_per_second);
@@ -18,6 +20,7 @@ class ProgressReporter {
 
  private:
   double end_time_;
+  double start_time_;
   std::FILE* stream_;
   bool live_;
   double interval_;

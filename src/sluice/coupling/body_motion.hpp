@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <cstddef>
 
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
 
 namespace sluice {
@@ -31,5 +32,13 @@ struct Wrench {
   Vec3 force = Vec3::Zero();
   Vec3 moment = Vec3::Zero();
 };
+
+inline void archive_state(StateArchive& a, BodyKinematics& k) {
+  a(k.position, k.orientation, k.velocity, k.angular_velocity, k.acceleration,
+    k.angular_acceleration);
+}
+inline void archive_state(StateArchive& a, Wrench& w) {
+  a(w.force, w.moment);
+}
 
 }  // namespace sluice

@@ -42,6 +42,11 @@ class Coupler {
   // The exchanges a step of dt takes: 1, or with a fluid that holds the bodies on springs,
   // enough that omega h stays below kExchangeAngle for the lightest free body.
   int exchanges(double dt) const;
+  // Checkpoints: the held loads, the motion handed to the fluid, the statistics.
+  void archive_state(StateArchive& a) {
+    a.section("coupler");
+    a(motion_, fluid_force_, fluid_moment_, most_substeps_, most_exchanges_);
+  }
   // A load held over an exchange of length h lags the body's motion; on a spring of frequency
   // omega that stays stable while omega h is below about 1 per spring on the body. Measured on
   // seed 002's free granular bed: omega h = 1 diverges, 0.5 holds; 0.25 keeps a factor 4.

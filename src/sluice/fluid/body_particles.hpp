@@ -22,6 +22,7 @@ class BodyParticles final : public ParticleFluid<D> {
 
  protected:
   void model_stages(StageList&, StageList&) override {}
+  void archive_model(StateArchive&) override {}  // the particles follow the bodies
   void body_point_forces(const std::vector<BodyKinematics>&, std::vector<Vec3>&) const override {}
 };
 

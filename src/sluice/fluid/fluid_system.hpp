@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sluice/core/stage.hpp"
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/time_step.hpp"
 #include "sluice/coupling/fluid_exchange.hpp"
 #include "sluice/io/vtk_writer.hpp"
@@ -71,6 +72,10 @@ class FluidSystem : public FluidExchange {
   // The reach of the model's interactions (a particle model's support): walls are this thick,
   // and a body this far outside the domain has left it.
   virtual double interaction_radius() const = 0;
+
+  // Checkpoints: writes, or reads back, everything the model carries from one step to the next
+  // (core/state_archive.hpp); the model is one built from the same case.
+  virtual void archive_state(StateArchive& a) = 0;
 };
 
 }  // namespace sluice

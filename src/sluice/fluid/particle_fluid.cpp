@@ -196,6 +196,16 @@ FluidEnergy ParticleFluid<D>::energy() const {
   return e;
 }
 
+template <int D>
+void ParticleFluid<D>::archive_state(StateArchive& a) {
+  a.section("particles");
+  state_.particles.archive_state(a);
+  a(state_.body_point_acceleration);
+  state_.cells.archive_state(a);
+  a.section("model");
+  archive_model(a);
+}
+
 template class ParticleFluid<2>;
 template class ParticleFluid<3>;
 

@@ -56,8 +56,12 @@ class ParticleFluid : public FluidSystem {
   FluidSize size() const override;
   FluidEnergy energy() const override;  // kinetic, potential and mass of the fluid
   double interaction_radius() const override { return radius_; }
+  // The particles (every field), the cells of the last sort, and then the model's own state.
+  void archive_state(StateArchive& a) override;
 
  protected:
+  // The model's state beyond its particle fields (archive_state).
+  virtual void archive_model(StateArchive& a) = 0;
   // The model's stages around the neighbour sort.
   virtual void model_stages(StageList& before_neighbours, StageList& after_neighbours) = 0;
   // The fluid's force on every body particle (kind kBody), indexed by its body point, from the

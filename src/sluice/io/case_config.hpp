@@ -125,7 +125,11 @@ struct CaseConfig {
   std::vector<BodyConfig> bodies;
   ContactConfig contact;
   std::vector<JointConfig> joints;
-  double body_interval = 0;  // time between rows of OUT/bodies/NAME.csv
+  double body_interval = 0;        // time between rows of OUT/bodies/NAME.csv
+  double checkpoint_interval = 0;  // simulated time between checkpoints; 0: none
+  // The case as read, with its --set overrides, less the keys a resumed run may change
+  // (end_time, checkpoint_interval, compare): a checkpoint of another case differs in it.
+  std::string identity;
   std::vector<ProbeConfig> probes;
   std::vector<CompareEntry> compare;  // read by `sluice compare` only
   std::string model_name;

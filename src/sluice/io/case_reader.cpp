@@ -139,6 +139,16 @@ AxisBox read_box(MapReader& map, int dimension) {
 
 namespace {
 
+// The case's text as YAML prints it, less what a resumed run may change.
+std::string identity_of(const YAML::Node& root) {
+  if (!root.IsMap()) return {};
+  YAML::Node copy = YAML::Clone(root);
+  for (const char* key : {"end_time", "checkpoint_interval", "compare"}) copy.remove(key);
+  YAML::Emitter out;
+  out << copy;
+  return out.c_str();
+}
+
 CaseConfig read_root(YAML::Node root, const std::string& file_name,
                      const std::vector<std::string>& overrides) {
   auto source = std::make_shared<YamlSource>();
@@ -151,6 +161,7 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
 
   CaseConfig c;
   c.source = source;
+  c.identity = identity_of(root);
   // The dimension decides how vectors are read, so it is read first.
   {
     MapReader probe_dim(source, root, "", 1);
@@ -199,6 +210,7 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
   index = 0;
   for (auto& joint : top.list_of_maps("joints")) c.joints.push_back(read_joint(joint, index++));
   c.body_interval = top.optional_positive("body_interval", c.probe_interval);
+  c.checkpoint_interval = top.optional_positive("checkpoint_interval", 0);
   if (top.has("contact")) {
     MapReader contact = top.map("contact");
     c.contact.solver = contact.optional_choice("solver", c.contact.solver, "contact solver",

@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <iterator>
 #include <stdexcept>
 #include <utility>
@@ -25,11 +28,16 @@ std::string csv_field(const std::string& text) {
 
 }  // namespace
 
-CsvWriter::CsvWriter(std::string path, std::vector<std::string> header)
-    : path_(std::move(path)), columns_(header.size()), file_(std::fopen(path_.c_str(), "w")) {
+CsvWriter::CsvWriter(std::string path, std::vector<std::string> header, CsvStart start)
+    : path_(std::move(path)), columns_(header.size()) {
+  if (start == CsvStart::kContinue && !std::filesystem::is_regular_file(path_)) {
+    throw std::runtime_error(fmt::format("cannot continue '{}': the file is missing", path_));
+  }
+  file_.reset(std::fopen(path_.c_str(), start == CsvStart::kNew ? "w" : "a"));
   if (!file_) {
     throw std::runtime_error(fmt::format("cannot open '{}': {}", path_, std::strerror(errno)));
   }
+  if (start == CsvStart::kContinue) return;
   std::string line;
   for (size_t i = 0; i < header.size(); ++i) {
     if (i > 0) line += ',';
@@ -54,6 +62,23 @@ void CsvWriter::row(const std::vector<double>& values) {
 void CsvWriter::flush() {
   if (std::fflush(file_.get()) != 0) {
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path_, std::strerror(errno)));
+  }
+}
+
+void CsvWriter::archive_state(StateArchive& a) {
+  flush();
+  std::uint64_t length = std::filesystem::file_size(path_);
+  const std::uint64_t present = length;
+  a(length);
+  if (!a.reading()) return;
+  if (present < length) {
+    throw std::runtime_error(
+        fmt::format("cannot continue '{}': it holds {} bytes, the checkpoint recorded {}", path_,
+                    present, length));
+  }
+  // Appending writes at the end, wherever the stream's position is.
+  if (::ftruncate(::fileno(file_.get()), static_cast<off_t>(length)) != 0) {
+    throw std::runtime_error(fmt::format("cannot cut '{}': {}", path_, std::strerror(errno)));
   }
 }
 

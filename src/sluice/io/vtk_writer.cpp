@@ -268,6 +268,15 @@ PvdSeries::PvdSeries(std::string path) : path_(std::move(path)) {}
 
 void PvdSeries::add(double time, const std::vector<std::string>& files_relative_to_pvd) {
   entries_.emplace_back(time, files_relative_to_pvd);
+  write();
+}
+
+void PvdSeries::archive_state(StateArchive& a) {
+  a(entries_);
+  if (a.reading()) write();
+}
+
+void PvdSeries::write() const {
   std::string xml =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "sluice/core/state_archive.hpp"
+
 namespace sluice::io {
 
 struct PointArrayF32 {
@@ -71,8 +73,12 @@ class PvdSeries {
   // Several files for one time, as the parts 0, 1, ... of the data set.
   void add(double time, const std::vector<std::string>& files_relative_to_pvd);
   const std::string& path() const;
+  // Checkpoints: the entries; read back, the file is written anew with them.
+  void archive_state(StateArchive& a);
 
  private:
+  void write() const;
+
   std::string path_;
   std::vector<std::pair<double, std::vector<std::string>>> entries_;
 };

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
 
 namespace sluice {
@@ -27,6 +28,9 @@ class CellList {
   void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order);
 
   Real radius() const { return kReach * cell_size_; }
+
+  // Checkpoints: the cells of the last sort (the particles have moved since).
+  void archive_state(StateArchive& a) { a(cell_start_); }
 
   // Calls fn(j, r_ij, r2) for every particle j != i with |r_i - r_j|^2 < radius2
   // (r_ij = r_i - r_j). radius2 must not exceed radius()^2.

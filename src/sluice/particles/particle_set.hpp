@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
 #include "sluice/particles/field_label.hpp"
 
@@ -92,6 +93,14 @@ class ParticleSet {
 
   // Applies a permutation to every field: after it, particle k is the one that was order[k].
   void reorder(const std::vector<std::uint32_t>& order);
+
+  // Checkpoints: every field, each under its name.
+  void archive_state(StateArchive& a) {
+    visit_fields(*this, [&](const FieldLabel& label, auto& values) {
+      a.section(label.name);
+      a(values);
+    });
+  }
 
  private:
   template <class Self, class Visit>

@@ -7,6 +7,7 @@
 #include <array>
 #include <string>
 
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
 
 namespace sluice {
@@ -51,6 +52,9 @@ struct RigidBody {
 
   // Applies the locks: zero locked velocities and locked angular-velocity components.
   void enforce_locks();
+
+  // Checkpoints: the motion (mass, inertia and locks come from the case).
+  void archive_state(StateArchive& a) { a(position, orientation, velocity, angular_momentum); }
 };
 
 }  // namespace sluice

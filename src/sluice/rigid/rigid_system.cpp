@@ -193,4 +193,13 @@ RigidSystemEnergy RigidSystem::energy() const {
   return e;
 }
 
+void RigidSystem::archive_state(StateArchive& a) {
+  a.section("rigid_system");
+  a.expect(std::uint64_t(bodies_.size()), "number of bodies and walls");
+  for (SystemBody& body : bodies_) a(body.state);
+  a(time_, substeps_, interaction_force_, interaction_torque_, joint_rows_);
+  a(totals_.solves, totals_.iterations, totals_.most_iterations, totals_.residual_sum,
+    totals_.largest_residual);
+}
+
 }  // namespace sluice

@@ -88,6 +88,10 @@ class RigidSystem {
   const RowGroup& contact_rows() const { return contact_rows_; }
   const RowGroup& joint_rows() const { return joint_rows_; }
 
+  // Checkpoints: the bodies' motion, the clock of prescribed motion, the interaction's last
+  // force (the next step's first half-kick), the joints' impulses (their warm start), totals.
+  void archive_state(StateArchive& a);
+
  private:
   void evaluate_interaction(double dt);
   void advance_complementarity(double dt, const std::vector<Vec3>& force,

@@ -8,7 +8,7 @@
 namespace sluice {
 
 BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies, const Vec3& travel,
-                       const Vec3& gravity, int dimension)
+                       const Vec3& gravity, int dimension, io::CsvStart start)
     : lift_axis_(gravity.norm() > 0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ()),
       with_side_(dimension == 3) {
   drag_axis_ = -travel;
@@ -17,7 +17,8 @@ BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies, co
       out_dir + "/energy.csv",
       std::vector<std::string>{"time", "body_kinetic", "body_potential", "contact_elastic",
                                "fluid_kinetic", "fluid_potential", "fluid_elastic", "total",
-                               "fluid_mass", "solid_substeps"});
+                               "fluid_mass", "solid_substeps"},
+      start);
   if (bodies.empty()) return;
   std::error_code error;
   std::filesystem::create_directories(out_dir + "/bodies", error);
@@ -31,7 +32,7 @@ BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies, co
       "contact_fy", "contact_fz", "contact_mx", "contact_my", "contact_mz"};
   for (std::size_t b = 0; b < bodies.count(); ++b) {
     body_csv_.push_back(std::make_unique<io::CsvWriter>(
-        out_dir + "/bodies/" + bodies.config(b).name + ".csv", header));
+        out_dir + "/bodies/" + bodies.config(b).name + ".csv", header, start));
   }
   std::vector<std::string> loads_header{"time"};
   const auto add_columns = [&](const std::string& name) {
@@ -41,7 +42,14 @@ BodyOutput::BodyOutput(const std::string& out_dir, const RigidBodies& bodies, co
   };
   for (std::size_t b = 0; b < bodies.count(); ++b) add_columns(bodies.config(b).name);
   add_columns("all_bodies");
-  loads_csv_ = std::make_unique<io::CsvWriter>(out_dir + "/loads.csv", loads_header);
+  loads_csv_ = std::make_unique<io::CsvWriter>(out_dir + "/loads.csv", loads_header, start);
+}
+
+void BodyOutput::archive_state(StateArchive& a) {
+  a.section("body_output");
+  for (auto& csv : body_csv_) csv->archive_state(a);
+  if (loads_csv_) loads_csv_->archive_state(a);
+  energy_csv_->archive_state(a);
 }
 
 void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& coupler,

@@ -20,10 +20,12 @@ class BodyOutput {
   // fluid's force against `travel` (unit, horizontal), lift along -gravity, side along
   // up x travel (3D only).
   BodyOutput(const std::string& out_dir, const RigidBodies& bodies, const Vec3& travel,
-             const Vec3& gravity, int dimension);
+             const Vec3& gravity, int dimension, io::CsvStart start = io::CsvStart::kNew);
 
   void record(double time, const RigidBodies& bodies, const Coupler& coupler,
               const FluidEnergy& fluid);
+  // Checkpoints: the files' lengths.
+  void archive_state(StateArchive& a);
 
  private:
   std::vector<std::unique_ptr<io::CsvWriter>> body_csv_;

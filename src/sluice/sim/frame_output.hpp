@@ -20,6 +20,13 @@ class FrameOutput {
 
   int frames_written() const { return frame_count_; }
   const std::string& series_path() const { return series_.path(); }
+  // Checkpoints: the frames so far; read back, the series lists them alone (a later frame a
+  // killed run wrote is written again).
+  void archive_state(StateArchive& a) {
+    a.section("frames");
+    a(frame_count_);
+    series_.archive_state(a);
+  }
 
  private:
   std::string out_dir_;

@@ -2,12 +2,13 @@
 
 namespace sluice {
 
-Probes::Probes(const std::vector<io::ProbeConfig>& probes, const std::string& csv_path)
+Probes::Probes(const std::vector<io::ProbeConfig>& probes, const std::string& csv_path,
+               io::CsvStart start)
     : probes_(probes) {
   if (probes_.empty() || csv_path.empty()) return;
   std::vector<std::string> header{"time [s]"};
   for (const std::string& label : labels()) header.push_back(label);
-  csv_ = std::make_unique<io::CsvWriter>(csv_path, header);
+  csv_ = std::make_unique<io::CsvWriter>(csv_path, header, start);
 }
 
 std::vector<std::string> Probes::labels() const {

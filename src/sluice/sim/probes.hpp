@@ -14,8 +14,10 @@ namespace sluice {
 
 class Probes {
  public:
-  // Opens the CSV file when the case has probes and `csv_path` is not empty.
-  Probes(const std::vector<io::ProbeConfig>& probes, const std::string& csv_path);
+  // Opens the CSV file when the case has probes and `csv_path` is not empty (kContinue: the
+  // file of a resumed run).
+  Probes(const std::vector<io::ProbeConfig>& probes, const std::string& csv_path,
+         io::CsvStart start = io::CsvStart::kNew);
 
   bool empty() const { return probes_.empty(); }
   // Appends one row for the time.
@@ -24,6 +26,10 @@ class Probes {
   std::vector<std::string> labels() const;
   // The values of one row, in the order of the case's probes (used by tests too).
   std::vector<double> measure(const FluidSystem& fluid) const;
+  // Checkpoints: the CSV file's length.
+  void archive_state(StateArchive& a) {
+    if (csv_) csv_->archive_state(a);
+  }
 
  private:
   std::vector<io::ProbeConfig> probes_;

@@ -31,6 +31,11 @@ class RigidBodies final : public BodyGeometry {
   }
 
   long substeps() const { return system_.substeps_taken(); }
+  // Checkpoints: the bodies' state and their contacts (shapes and joints come from the case).
+  void archive_state(StateArchive& a) {
+    a.section("bodies");
+    system_.archive_state(a);
+  }
 
   // BodyGeometry
   std::size_t body_count() const override { return count(); }

@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
+#include <optional>
 
 #include "sluice/core/errors.hpp"
 #include "sluice/core/progress.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/sim/body_output.hpp"
+#include "sluice/sim/checkpoints.hpp"
 #include "sluice/sim/divergence_guard.hpp"
 #include "sluice/sim/frame_output.hpp"
 #include "sluice/sim/probes.hpp"
@@ -28,6 +31,33 @@ double next_multiple(double time, double interval) {
   return k * interval;
 }
 
+// Where a run stands between steps beside the simulation: the next times of its outputs, and
+// its first step, which the collapse check measures every later one against.
+struct RunSchedule {
+  double next_output = 0, next_probe = 0, next_body = 0, next_checkpoint = 0;
+  double first_dt = 0;
+  std::string first_limit;
+
+  TimeStep first() const { return {first_dt, first_limit.c_str()}; }
+  void archive_state(StateArchive& a) {
+    a.section("schedule");
+    a(next_output, next_probe, next_body, next_checkpoint, first_dt, first_limit);
+  }
+};
+
+// A whole run's state, the simulation first: a checkpoint that does not fit the case fails
+// there, before the output files are touched (reading back cuts them to the checkpoint).
+template <int D>
+void archive_run(StateArchive& a, RunSchedule& schedule, Simulation<D>& sim, FrameOutput& frames,
+                 Probes& probes, BodyOutput& body_output) {
+  schedule.archive_state(a);
+  sim.archive_state(a);
+  frames.archive_state(a);
+  a.section("probes");
+  probes.archive_state(a);
+  body_output.archive_state(a);
+}
+
 template <int D>
 RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // Build (and so validate) everything before creating the output directory: bad input
@@ -36,14 +66,48 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   Simulation<D> sim(config);
   const double end_time = options.end_time.value_or(config.end_time);
   const std::string model = config.has_fluid() ? config.model_name : "bodies-alone";
-  const TimeStep first = sim.next_time_step();
-  if (const auto collapsed = collapsed_step(first, first, 0, end_time, model)) {
-    throw DivergenceError(fmt::format("the run diverged at step 0, t = 0 s: {}", *collapsed));
+  const CheckpointFolder checkpoint_folder(options.out_dir);
+  const io::CheckpointHeader identity = checkpoint_header(config, D);
+  std::optional<io::Checkpoint> resumed;
+  RunSchedule schedule;
+  if (options.resume) {
+    resumed = newest_checkpoint(checkpoint_folder, identity, [&](const std::string& warning) {
+      if (!options.quiet) fmt::print(stderr, "warning: {}\n", warning);
+    });
+    if (resumed->header.time >= end_time * (1 - 1e-12)) {
+      throw InputError(checkpoint_folder.path(), 0, "",
+                       fmt::format("the run already reached t = {:.6g} s, its end time is {:.6g} "
+                                   "s: give --end a later time to go on",
+                                   resumed->header.time, end_time));
+    }
+  } else {
+    const TimeStep first = sim.next_time_step();
+    if (const auto collapsed = collapsed_step(first, first, 0, end_time, model)) {
+      throw DivergenceError(fmt::format("the run diverged at step 0, t = 0 s: {}", *collapsed));
+    }
+    schedule.first_dt = first.dt;
+    schedule.first_limit = first.limit;
   }
+  const io::CsvStart start = resumed ? io::CsvStart::kContinue : io::CsvStart::kNew;
   FrameOutput frames(options.out_dir, config.name);
-  BodyOutput body_output(options.out_dir, sim.bodies(), config.travel_direction, config.gravity, D);
+  std::optional<BodyOutput> body_output;
+  std::optional<Probes> probes;
+  try {
+    body_output.emplace(options.out_dir, sim.bodies(), config.travel_direction, config.gravity, D,
+                        start);
+    probes.emplace(config.probes, options.out_dir + "/probes.csv", start);
+    if (resumed) {
+      StateArchive archive(resumed->state);
+      archive_run(archive, schedule, sim, frames, *probes, *body_output);
+      archive.finish();
+    }
+  } catch (const StateArchiveError& e) {
+    throw InputError(resumed->path, 0, "", fmt::format("cannot resume: {}", e.what()));
+  } catch (const std::runtime_error& e) {
+    if (!resumed) throw;
+    throw InputError(options.out_dir, 0, "", fmt::format("cannot resume: {}", e.what()));
+  }
   FluidSystem& fluid = sim.fluid();
-  Probes probes(config.probes, options.out_dir + "/probes.csv");
   AxisBox escape_box = config.domain;
   escape_box.min.array() -= fluid.interaction_radius();
   escape_box.max.array() += fluid.interaction_radius();
@@ -56,35 +120,62 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.threads = exec::thread_count();
   summary.series_path = frames.series_path();
   summary.bodies = sim.bodies().count();
+  summary.start_time = sim.time();
+  const long first_step = sim.clock().step;
   if (!options.quiet) {
-    fmt::print(stderr,
-               "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n  first time "
-               "step {:.3g} s, limited by {}: about {:.3g} steps to t = {:.6g} s\n",
+    fmt::print(stderr, "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n",
                config.name, D, summary.particles, fluid.size().element_name,
-               summary.fluid_particles, summary.bodies, summary.threads, fluid.describe(), first.dt,
-               first.limit, end_time / first.dt, end_time);
+               summary.fluid_particles, summary.bodies, summary.threads, fluid.describe());
+    if (resumed) {
+      fmt::print(stderr, "  resuming from {} at t = {:.6g} s (step {}) to t = {:.6g} s\n",
+                 resumed->path, sim.time(), first_step, end_time);
+    } else {
+      fmt::print(stderr,
+                 "  first time step {:.3g} s, limited by {}: about {:.3g} steps to t = "
+                 "{:.6g} s\n",
+                 schedule.first_dt, schedule.first_limit, end_time / schedule.first_dt, end_time);
+    }
   }
 
   auto& timers = sim.timers();
   const std::size_t output_slot = timers.slot("output");
   const std::size_t guard_slot = timers.slot("guard");
-  timers.time(output_slot, [&] {
-    frames.write(fluid.frame(), sim.time());
-    probes.record(sim.time(), fluid);
-    body_output.record(sim.time(), sim.bodies(), sim.coupler(), fluid.energy());
-  });
+  const std::size_t checkpoint_slot = timers.slot("checkpoint");
+  const bool checkpointing = config.checkpoint_interval > 0;
+  if (!resumed) {
+    timers.time(output_slot, [&] {
+      frames.write(fluid.frame(), sim.time());
+      probes->record(sim.time(), fluid);
+      body_output->record(sim.time(), sim.bodies(), sim.coupler(), fluid.energy());
+    });
+    schedule.next_output = next_multiple(0, config.output_interval);
+    schedule.next_probe = probes->empty() ? std::numeric_limits<double>::infinity()
+                                          : next_multiple(0, config.probe_interval);
+    schedule.next_body = next_multiple(0, config.body_interval);
+    schedule.next_checkpoint = checkpointing ? next_multiple(0, config.checkpoint_interval) : 0;
+  }
   fluid.remember_good(sim.time());  // the guard's last good state
-
-  ProgressReporter progress(end_time, stderr, options.live_progress);
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto write_checkpoint = [&] {
+    timers.time(checkpoint_slot, [&] {
+      StateArchive archive;
+      archive_run(archive, schedule, sim, frames, *probes, *body_output);
+      io::CheckpointHeader header = identity;
+      header.time = sim.time();
+      header.step = sim.clock().step;
+      checkpoint_folder.write(header, archive.bytes());
+    });
+    ++summary.checkpoints;
   };
-  double next_output = next_multiple(0, config.output_interval);
-  double next_probe = probes.empty() ? end_time : next_multiple(0, config.probe_interval);
-  double next_body = next_multiple(0, config.body_interval);
+
+  ProgressReporter progress(end_time, stderr, options.live_progress, 10.0, sim.time());
+  const auto start_wall = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_wall).count();
+  };
+  const TimeStep first = schedule.first();
   while (sim.time() < end_time * (1 - 1e-12)) {
-    const double until = std::min({next_output, next_probe, next_body, end_time});
+    const double until =
+        std::min({schedule.next_output, schedule.next_probe, schedule.next_body, end_time});
     sim.step(until);
     const double t = sim.time();
     std::optional<std::string> problem;
@@ -108,28 +199,34 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     }
     const bool at_end = t >= end_time * (1 - 1e-12);
     timers.time(output_slot, [&] {
-      if (!probes.empty() && (t >= next_probe * (1 - 1e-12) || at_end)) {
-        probes.record(t, fluid);
-        next_probe = next_multiple(t, config.probe_interval);
+      if (!probes->empty() && (t >= schedule.next_probe * (1 - 1e-12) || at_end)) {
+        probes->record(t, fluid);
+        schedule.next_probe = next_multiple(t, config.probe_interval);
       }
-      if (t >= next_body * (1 - 1e-12) || at_end) {
-        body_output.record(t, sim.bodies(), sim.coupler(), fluid.energy());
-        next_body = next_multiple(t, config.body_interval);
+      if (t >= schedule.next_body * (1 - 1e-12) || at_end) {
+        body_output->record(t, sim.bodies(), sim.coupler(), fluid.energy());
+        schedule.next_body = next_multiple(t, config.body_interval);
       }
-      if (t >= next_output * (1 - 1e-12) || at_end) {
+      if (t >= schedule.next_output * (1 - 1e-12) || at_end) {
         frames.write(fluid.frame(), t);
-        next_output = next_multiple(t, config.output_interval);
+        schedule.next_output = next_multiple(t, config.output_interval);
       }
     });
+    // After the outputs of the step, which the checkpoint counts as written. A checkpoint does
+    // not shorten a step: a run with checkpoints takes the same steps as one without.
+    if (checkpointing && (t >= schedule.next_checkpoint * (1 - 1e-12) || at_end)) {
+      schedule.next_checkpoint = next_multiple(t, config.checkpoint_interval);
+      write_checkpoint();
+    }
     if (!options.quiet) {
       const double wall = elapsed();
-      const long steps = sim.clock().step;
-      progress.update(t, steps, wall > 0 ? double(summary.particles) * steps / wall : 0);
+      const long steps = sim.clock().step - first_step;
+      progress.update(t, sim.clock().step, wall > 0 ? double(summary.particles) * steps / wall : 0);
     }
   }
   if (!options.quiet) progress.finish();
 
-  summary.steps = sim.clock().step;
+  summary.steps = sim.clock().step - first_step;
   summary.simulated_time = sim.time();
   summary.wall_seconds = elapsed();
   summary.frames = frames.frames_written();
@@ -139,8 +236,8 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.velocity_steps = sim.bodies().system().rigid().velocity_steps();
   summary.stages = timers.entries();
   summary.fluid_counters = fluid.counters();
-  const std::vector<std::string> labels = probes.labels();
-  const std::vector<double> values = probes.measure(fluid);
+  const std::vector<std::string> labels = probes->labels();
+  const std::vector<double> values = probes->measure(fluid);
   for (std::size_t k = 0; k < labels.size(); ++k)
     summary.final_probes.emplace_back(labels[k], values[k]);
   return summary;

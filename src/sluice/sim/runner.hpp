@@ -16,14 +16,18 @@ struct RunOptions {
   std::string stats_path;          // JSON statistics, if not empty
   bool live_progress = false;      // redraw one progress line (terminal)
   bool quiet = false;              // no progress and no summary
+  // Continue the run in out_dir from its newest valid checkpoint (docs/output.md#checkpoints).
+  bool resume = false;
 };
 
 struct RunSummary {
   std::string element_name = "particles";  // what `particles` counts: particles or cells
   std::size_t particles = 0;
   std::size_t fluid_particles = 0;
-  long steps = 0;
+  long steps = 0;  // taken by this run (a resumed run: since its checkpoint)
   double simulated_time = 0;
+  double start_time = 0;  // a resumed run: its checkpoint's time
+  int checkpoints = 0;    // written by this run
   double wall_seconds = 0;
   int frames = 0;
   int threads = 1;
@@ -37,13 +41,15 @@ struct RunSummary {
   std::vector<std::pair<std::string, double>> fluid_counters;  // FluidSystem::counters()
   std::vector<std::pair<std::string, double>> final_probes;    // each probe at the end
 
+  // This run's own steps per wall second, times the particles.
   double particle_steps_per_second() const {
     return wall_seconds > 0 ? static_cast<double>(particles) * steps / wall_seconds : 0;
   }
 };
 
-// Runs the case. Throws InputError for bad input and DivergenceError (after writing the
-// last good frame) when the run diverges.
+// Runs the case, or with options.resume continues it from its newest checkpoint. Throws
+// InputError for bad input (or a checkpoint of another case) and DivergenceError (after
+// writing the last good frame) when the run diverges.
 RunSummary run_case(const io::CaseConfig& config, const RunOptions& options);
 
 struct CheckSummary {

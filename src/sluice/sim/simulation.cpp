@@ -51,6 +51,16 @@ void Simulation<D>::step(double until) {
   ++clock_.step;
 }
 
+template <int D>
+void Simulation<D>::archive_state(StateArchive& a) {
+  a.section("clock");
+  a(clock_.time, clock_.dt, clock_.step, last_step_.dt);  // its limit is named anew each step
+  bodies_->archive_state(a);
+  coupler_.archive_state(a);
+  a.section("fluid");
+  fluid_->archive_state(a);
+}
+
 template class Simulation<2>;
 template class Simulation<3>;
 

@@ -48,6 +48,9 @@ class Simulation {
   StageTimers& timers() { return timers_; }
   const io::CaseConfig& config() const { return config_; }  // with the model's bodies
 
+  // Checkpoints: the clock, the bodies, the coupling and the fluid, written or read back.
+  void archive_state(StateArchive& a);
+
  private:
   io::CaseConfig config_;
   std::unique_ptr<RigidBodies> bodies_;

@@ -39,6 +39,9 @@ class StillWater final : public ParticleFluid<D> {
   }
   void body_point_forces(const std::vector<BodyKinematics>&, std::vector<Vec3>&) const override {
   }  // no force on any body
+  // Checkpoints: what the model carries from step to step beyond its particle fields (which
+  // the engine saves): nothing here.
+  void archive_model(StateArchive&) override {}
 
  private:
   // p = rho g depth, so depth = p / (rho g).

@@ -193,6 +193,18 @@ class ConstraintModel final : public ParticleFluid<D> {
     after.push_back(
         make_stage<const StepClock>("density_rows", [this](const StepClock&) { build_rows(); }));
   }
+  // The rows the next solve takes were built at the end of the last step from what the
+  // checkpoint holds: read back, they are built again (and the totals that counts put back).
+  void archive_model(StateArchive& a) override {
+    a(max_speed_, steps_, largest_error_, row_total_, entry_total_);
+    if (!a.reading()) return;
+    const Real largest = largest_error_;
+    const long rows = row_total_, entries = entry_total_;
+    build_rows();
+    largest_error_ = largest;
+    row_total_ = rows;
+    entry_total_ = entries;
+  }
   // The loads come from the solve (body_loads), not from the body particles.
   void body_point_forces(const std::vector<BodyKinematics>&, std::vector<Vec3>&) const override {}
 

@@ -160,6 +160,12 @@ class GranularModel final : public ParticleFluid<D> {
 
  protected:
   void model_stages(StageList&, StageList&) override {}
+  // The warm starts of the sphere and body contacts; the fastest speed of the last solve (the
+  // wall correction after it may slow a sphere, so it is not the present one).
+  void archive_model(StateArchive& a) override {
+    a(sphere_contacts_, last_body_impulse_, max_speed_);
+    a(steps_, sphere_contact_total_, body_contact_total_);
+  }
   // The loads come from the solve (body_loads), not from the body particles.
   void body_point_forces(const std::vector<BodyKinematics>&, std::vector<Vec3>&) const override {}
 

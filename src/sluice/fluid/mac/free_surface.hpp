@@ -30,6 +30,12 @@ class FreeSurface {
   const CellField& phi() const { return phi_; }
   std::size_t marker_count() const { return markers_ ? markers_->size() : 0; }
 
+  // Checkpoints: the level set, the markers, and the step count that paces reinitialisation.
+  void archive_state(StateArchive& a) {
+    a(phi_, steps_);
+    if (markers_) markers_->archive_state(a);
+  }
+
  private:
   MacGrid<D> grid_;
   CellField phi_;

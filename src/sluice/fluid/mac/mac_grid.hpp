@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
 
 namespace sluice {

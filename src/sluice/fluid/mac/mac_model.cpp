@@ -386,6 +386,16 @@ std::vector<std::pair<std::string, double>> MacModel<D>::counters() const {
           {"marker particles", static_cast<double>(surface_.marker_count())}};
 }
 
+template <int D>
+void MacModel<D>::archive_state(StateArchive& a) {
+  a(now_.u, now_.pressure, valid_, motion_, loads_);
+  projection_.archive_state(a);
+  surface_.archive_state(a);
+  a(projections_, pressure_iterations_, unconverged_);
+  // Not carry_through: that would move the surface, which the checkpoint holds as it was.
+  if (a.reading() && !motion_.empty()) solid_.place_bodies(motion_);
+}
+
 template class MacModel<2>;
 template class MacModel<3>;
 

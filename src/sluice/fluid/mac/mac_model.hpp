@@ -45,6 +45,9 @@ class MacModel : public FluidSystem {
   FluidEnergy energy() const override;
   std::vector<std::pair<std::string, double>> counters() const override;
   double interaction_radius() const override { return grid_.h; }
+  // The velocities, pressures and valid faces, the surface with its markers, the projection's
+  // warm start and the loads it held; read back, the bodies are placed in the grid again.
+  void archive_state(StateArchive& a) override;
 
   const MacGrid<D>& grid() const { return grid_; }
   const CellField& level_set() const { return surface_.phi(); }

@@ -33,11 +33,15 @@ class ParticleLevelSet {
   std::vector<Vec<D>> positions() const;
   std::vector<int> signs() const;
 
+  // Checkpoints: the markers in their order and the seed of the next reseed.
+  void archive_state(StateArchive& a) { a(markers_, seed_counter_); }
+
  private:
   struct Marker {
     Vec<D> x;
     Real radius;
     int sign;  // +1 in the air, -1 in the water
+    void archive_state(StateArchive& a) { a(x, radius, sign); }
   };
   int per_cell_;
   Real band_;

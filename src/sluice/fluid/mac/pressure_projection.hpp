@@ -60,6 +60,9 @@ class PressureProjection {
                            Real dt, Real density, FaceField<D>& u, CellField& pressure,
                            FaceMarks<D>& valid, std::vector<ProjectedBody>& bodies);
 
+  // Checkpoints: the warm start.
+  void archive_state(StateArchive& a) { a(last_solution_); }
+
  private:
   std::unique_ptr<SparseSolver> solver_;
   std::vector<int> unknown_;       // per cell: its row, or -1

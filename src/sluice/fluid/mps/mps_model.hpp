@@ -94,6 +94,11 @@ class MpsModel final : public ParticleFluid<D> {
     return step;
   }
 
+  void archive_model(StateArchive& a) override {
+    neighbours_.archive_state(a);  // the next step's prediction uses the last step's list
+    a(max_speed_, failure_, solves_, iterations_, unknowns_);
+  }
+
   std::vector<std::pair<std::string, double>> counters() const override {
     if (explicit_variant()) return {};
     return {{"pressure_solves", static_cast<double>(solves_)},

@@ -56,6 +56,9 @@ class NeighbourList {
       fn(static_cast<std::size_t>(index_[k]));
   }
 
+  // Checkpoints: the list is built at the predicted positions, which the particles have left.
+  void archive_state(StateArchive& a) { a(start_, index_); }
+
  private:
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> index_;

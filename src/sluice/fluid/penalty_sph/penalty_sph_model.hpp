@@ -144,6 +144,17 @@ class PenaltySphModel final : public ParticleFluid<D> {
   FieldHandle<Vec<D>> boundary_force_field() const { return boundary_force_; }
 
  protected:
+  // The walls and fixed layers are gathered at the first step and never move: read back, they
+  // are gathered again.
+  void archive_model(StateArchive& a) override {
+    a(max_speed_, max_acceleration_, body_pressure_force_, body_impulse_, body_start_, last_dt_);
+    a(steps_, fluid_steps_, contacts_, crossings_, substeps_, force_sum_, peak_force_);
+    if (a.reading() && steps_ > 0) {
+      auto& ps = this->state().particles;
+      solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
+    }
+  }
+
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(make_stage<const StepClock>("kick_drift",
                                                  [this](const StepClock& c) { kick_drift(c.dt); }));

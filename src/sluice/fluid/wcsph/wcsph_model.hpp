@@ -57,6 +57,8 @@ class WcsphModel final : public ParticleFluid<D> {
     measure_extremes(s);
   }
 
+  void archive_model(StateArchive& a) override { a(max_speed_, max_acceleration_); }
+
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(make_stage<const StepClock>(
         "kick_drift", [this](const StepClock& c) { kick_drift(this->state(), c.dt); }));

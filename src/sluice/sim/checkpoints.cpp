@@ -1,0 +1,118 @@
+#include "sluice/sim/checkpoints.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+#include "sluice/core/errors.hpp"
+
+namespace sluice {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kPrefix = "step_";
+constexpr std::string_view kSuffix = ".ckpt";
+
+// The step in a checkpoint's file name, or -1 for another file.
+long long step_of(const std::string& name) {
+  if (name.size() <= kPrefix.size() + kSuffix.size() || !name.starts_with(kPrefix) ||
+      !name.ends_with(kSuffix)) {
+    return -1;
+  }
+  const std::string digits =
+      name.substr(kPrefix.size(), name.size() - kPrefix.size() - kSuffix.size());
+  if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return -1;
+  return std::stoll(digits);
+}
+
+}  // namespace
+
+CheckpointFolder::CheckpointFolder(const std::string& out_dir)
+    : folder_(out_dir + "/checkpoints") {}
+
+std::vector<std::string> CheckpointFolder::files() const {
+  std::vector<std::pair<long long, std::string>> found;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder_, error)) {
+    const long long step = step_of(entry.path().filename().string());
+    if (step >= 0) found.emplace_back(step, entry.path().string());
+  }
+  std::sort(found.begin(), found.end(), std::greater<>());
+  std::vector<std::string> paths;
+  for (auto& [step, path] : found) paths.push_back(std::move(path));
+  return paths;
+}
+
+void CheckpointFolder::write(const io::CheckpointHeader& header, std::string_view state) const {
+  std::error_code error;
+  fs::create_directories(folder_, error);
+  if (error) {
+    throw std::runtime_error(fmt::format("cannot create '{}': {}", folder_, error.message()));
+  }
+  io::write_checkpoint(fmt::format("{}/{}{:010d}{}", folder_, kPrefix, header.step, kSuffix),
+                       header, state);
+  const std::vector<std::string> all = files();
+  for (std::size_t k = kCheckpointsKept; k < all.size(); ++k) fs::remove(all[k], error);
+  for (const auto& entry : fs::directory_iterator(folder_, error)) {
+    if (entry.path().extension() == ".tmp") fs::remove(entry.path(), error);
+  }
+}
+
+io::CheckpointHeader checkpoint_header(const io::CaseConfig& config, int dimension) {
+  io::CheckpointHeader h;
+  h.sluice_version = io::sluice_version();
+  h.case_name = config.name;
+  h.model = config.has_fluid() ? config.model_name : "bodies-alone";
+  h.dimension = dimension;
+  h.case_identity = io::crc32_of(config.identity);
+  return h;
+}
+
+io::Checkpoint newest_checkpoint(const CheckpointFolder& folder,
+                                 const io::CheckpointHeader& expected,
+                                 const std::function<void(const std::string&)>& warn) {
+  const std::vector<std::string> files = folder.files();
+  if (files.empty()) {
+    throw InputError(folder.path(), 0, "",
+                     "no checkpoint to resume from (the case's checkpoint_interval turns them on)");
+  }
+  for (const std::string& path : files) {
+    io::Checkpoint checkpoint;
+    try {
+      checkpoint = io::read_checkpoint(path);
+    } catch (const io::CheckpointError& e) {
+      warn(fmt::format("skipping the checkpoint {}", e.what()));
+      continue;
+    }
+    const io::CheckpointHeader& h = checkpoint.header;
+    const auto refuse = [&](const std::string& what) {
+      throw InputError(path, 0, "", "cannot resume: the checkpoint is " + what);
+    };
+    if (h.sluice_version != expected.sluice_version) {
+      refuse(fmt::format("of sluice {}, this is sluice {}", h.sluice_version,
+                         expected.sluice_version));
+    }
+    if (h.case_name != expected.case_name || h.dimension != expected.dimension) {
+      refuse(fmt::format("of the {}D case '{}', not of the {}D case '{}'", h.dimension, h.case_name,
+                         expected.dimension, expected.case_name));
+    }
+    if (h.model != expected.model) {
+      refuse(fmt::format("of the model '{}', this case runs '{}'", h.model, expected.model));
+    }
+    if (h.case_identity != expected.case_identity) {
+      refuse(
+          fmt::format("of another version of the case '{}' (keys other than end_time and "
+                      "checkpoint_interval, or --set values, differ)",
+                      h.case_name));
+    }
+    return checkpoint;
+  }
+  throw InputError(folder.path(), 0, "", "no checkpoint reads back whole; cannot resume");
+}
+
+}  // namespace sluice

@@ -1,0 +1,44 @@
+// A run's checkpoints in OUT/checkpoints/ (docs/output.md#checkpoints): each written at the end
+// of a step as step_NNNNNNNNNN.ckpt (io/checkpoint_file.hpp), the newest two kept; and, for
+// `sluice run --resume`, the newest one that reads back whole and belongs to the case.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sluice/io/case_config.hpp"
+#include "sluice/io/checkpoint_file.hpp"
+
+namespace sluice {
+
+// How many checkpoints a run keeps: the newest may be the one a kill cut short.
+inline constexpr std::size_t kCheckpointsKept = 2;
+
+class CheckpointFolder {
+ public:
+  explicit CheckpointFolder(const std::string& out_dir);
+
+  const std::string& path() const { return folder_; }
+  // Writes the checkpoint of `header.step` atomically, then removes all but the newest
+  // kCheckpointsKept (and any temporary file a killed run left).
+  void write(const io::CheckpointHeader& header, std::string_view state) const;
+  // The checkpoint files, newest (highest step) first.
+  std::vector<std::string> files() const;
+
+ private:
+  std::string folder_;
+};
+
+// What a checkpoint of this case, model and build records (time and step aside).
+io::CheckpointHeader checkpoint_header(const io::CaseConfig& config, int dimension);
+
+// The newest checkpoint in the folder that reads back whole; each damaged or partial one newer
+// than it is skipped with a line to `warn`. Throws InputError when there is none, or when it
+// is of another case, model, dimension or sluice version than `expected`.
+io::Checkpoint newest_checkpoint(const CheckpointFolder& folder,
+                                 const io::CheckpointHeader& expected,
+                                 const std::function<void(const std::string&)>& warn);
+
+}  // namespace sluice
