@@ -120,8 +120,13 @@ Checkpoint read_checkpoint(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CheckpointError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < kPrefix || std::string_view(bytes).substr(0, 8) != kMagic) {
+  const std::size_t head = std::min(bytes.size(), kMagic.size());
+  if (std::string_view(bytes).substr(0, head) != kMagic.substr(0, head)) {
     throw CheckpointError(fmt::format("{}: not a sluice checkpoint (no SLUICECP header)", path));
+  }
+  if (bytes.size() < kPrefix) {
+    throw CheckpointError(
+        fmt::format("{}: {} bytes, cut short within its header", path, bytes.size()));
   }
   const auto format = read_raw<std::uint32_t>(bytes, 8);
   if (format != kCheckpointFormat) {
@@ -147,8 +152,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   } catch (const StateArchiveError& e) {
     throw CheckpointError(fmt::format("{}: {}", path, e.what()));
   }
-  const std::size_t head = archive.bytes_read();
-  checkpoint.state.assign(covered.substr(kPrefix + head));
+  checkpoint.state.assign(covered.substr(kPrefix + archive.bytes_read()));
   return checkpoint;
 }
 

@@ -48,6 +48,11 @@ std::vector<std::string> CheckpointFolder::files() const {
   return paths;
 }
 
+void CheckpointFolder::clear() const {
+  std::error_code error;
+  for (const std::string& path : files()) fs::remove(path, error);
+}
+
 void CheckpointFolder::write(const io::CheckpointHeader& header, std::string_view state) const {
   std::error_code error;
   fs::create_directories(folder_, error);

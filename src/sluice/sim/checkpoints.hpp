@@ -26,6 +26,9 @@ class CheckpointFolder {
   void write(const io::CheckpointHeader& header, std::string_view state) const;
   // The checkpoint files, newest (highest step) first.
   std::vector<std::string> files() const;
+  // Removes every checkpoint: a new run into the folder must not leave an older run's to be
+  // resumed (or to outrank its own).
+  void clear() const;
 
  private:
   std::string folder_;

@@ -143,6 +143,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   const std::size_t checkpoint_slot = timers.slot("checkpoint");
   const bool checkpointing = config.checkpoint_interval > 0;
   if (!resumed) {
+    checkpoint_folder.clear();
     timers.time(output_slot, [&] {
       frames.write(fluid.frame(), sim.time());
       probes->record(sim.time(), fluid);
