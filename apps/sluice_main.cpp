@@ -20,11 +20,15 @@
 namespace {
 
 void print_summary(const sluice::RunSummary& r) {
+  const std::string span =
+      r.start_time > 0 ? fmt::format("t = {:.6g} to {:.6g} s", r.start_time, r.simulated_time)
+                       : fmt::format("{:.6g} s", r.simulated_time);
   fmt::print(
-      "done: {:.6g} s simulated in {} steps, {:.2f} s wall, {:.3g} M particle-steps/s "
+      "done: {} simulated in {} steps, {:.2f} s wall, {:.3g} M particle-steps/s "
       "({} particles, {} threads), {} frames in {}\n",
-      r.simulated_time, r.steps, r.wall_seconds, r.particle_steps_per_second() / 1e6, r.particles,
-      r.threads, r.frames, r.series_path);
+      span, r.steps, r.wall_seconds, r.particle_steps_per_second() / 1e6, r.particles, r.threads,
+      r.frames, r.series_path);
+  if (r.checkpoints > 0) fmt::print("  checkpoints written: {}\n", r.checkpoints);
   if (r.bodies > 0) {
     fmt::print("  {} bodies: {} solid sub-steps ({:.3g} per step, at most {} in a step)\n",
                r.bodies, r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,

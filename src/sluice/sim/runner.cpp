@@ -122,6 +122,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.bodies = sim.bodies().count();
   summary.start_time = sim.time();
   const long first_step = sim.clock().step;
+  const long first_substeps = sim.bodies().substeps();
   if (!options.quiet) {
     fmt::print(stderr, "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n",
                config.name, D, summary.particles, fluid.size().element_name,
@@ -231,7 +232,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.simulated_time = sim.time();
   summary.wall_seconds = elapsed();
   summary.frames = frames.frames_written();
-  summary.solid_substeps = sim.bodies().substeps();
+  summary.solid_substeps = sim.bodies().substeps() - first_substeps;
   summary.most_substeps_per_step = sim.coupler().most_substeps();
   summary.most_exchanges_per_step = sim.coupler().most_exchanges();
   summary.velocity_steps = sim.bodies().system().rigid().velocity_steps();
@@ -305,20 +306,23 @@ std::string stats_json(const RunSummary& r) {
   return fmt::format(
       "{{\n  \"element_name\": \"{}\",\n  \"particles\": {},\n  \"fluid_particles\": {},\n"
       "  \"steps\": {},\n"
-      "  \"simulated_seconds\": {:.9g},\n  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n"
+      "  \"simulated_seconds\": {:.9g},\n  \"start_seconds\": {:.9g},\n"
+      "  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n"
       "  \"particle_steps_per_second\": {:.6g},\n  \"fluid_particle_steps_per_second\": {:.6g},\n"
       "  \"wall_seconds_per_simulated_second\": {:.6g},\n  \"frames\": {},\n"
+      "  \"checkpoints\": {},\n"
       "  \"bodies\": {},\n  \"solid_substeps\": {},\n  \"solid_substeps_per_step\": {:.6g},\n"
       "  \"most_solid_substeps_in_a_step\": {},\n  \"most_body_exchanges_in_a_step\": {},\n"
       "  \"velocity_solves\": {{{}}},\n"
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
-      r.element_name, r.particles, r.fluid_particles, r.steps, r.simulated_time, r.wall_seconds,
-      r.threads, r.particle_steps_per_second(), fluid_rate,
-      r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0, r.frames, r.bodies,
-      r.solid_substeps, r.steps > 0 ? double(r.solid_substeps) / r.steps : 0,
-      r.most_substeps_per_step, r.most_exchanges_per_step, json_map(velocity_solves),
-      json_map(r.fluid_counters), json_map(r.final_probes), stages);
+      r.element_name, r.particles, r.fluid_particles, r.steps, r.simulated_time, r.start_time,
+      r.wall_seconds, r.threads, r.particle_steps_per_second(), fluid_rate,
+      r.simulated_time > r.start_time ? r.wall_seconds / (r.simulated_time - r.start_time) : 0,
+      r.frames, r.checkpoints, r.bodies, r.solid_substeps,
+      r.steps > 0 ? double(r.solid_substeps) / r.steps : 0, r.most_substeps_per_step,
+      r.most_exchanges_per_step, json_map(velocity_solves), json_map(r.fluid_counters),
+      json_map(r.final_probes), stages);
 }
 
 }  // namespace sluice

@@ -34,7 +34,7 @@ struct RunSummary {
   std::vector<StageTimers::Entry> stages;
   std::string series_path;
   std::size_t bodies = 0;
-  long solid_substeps = 0;  // solid sub-steps over the run (bodies sub-cycle within a step)
+  long solid_substeps = 0;  // solid sub-steps of this run (bodies sub-cycle within a step)
   int most_substeps_per_step = 0;
   int most_exchanges_per_step = 1;    // of the fluid's loads with the bodies (Coupler::exchanges)
   VelocityStepTotals velocity_steps;  // the velocity-level solves (joints, complementarity)
