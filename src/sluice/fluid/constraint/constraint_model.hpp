@@ -194,7 +194,8 @@ class ConstraintModel final : public ParticleFluid<D> {
         make_stage<const StepClock>("density_rows", [this](const StepClock&) { build_rows(); }));
   }
   // The rows the next solve takes were built at the end of the last step from what the
-  // checkpoint holds: read back, they are built again (and the totals that counts put back).
+  // checkpoint holds: read back, they are built again, and the running totals that building
+  // adds to are put back as they were.
   void archive_model(StateArchive& a) override {
     a(max_speed_, steps_, largest_error_, row_total_, entry_total_);
     if (!a.reading()) return;

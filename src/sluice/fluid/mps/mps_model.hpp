@@ -94,11 +94,6 @@ class MpsModel final : public ParticleFluid<D> {
     return step;
   }
 
-  void archive_model(StateArchive& a) override {
-    neighbours_.archive_state(a);  // the next step's prediction uses the last step's list
-    a(max_speed_, failure_, solves_, iterations_, unknowns_);
-  }
-
   std::vector<std::pair<std::string, double>> counters() const override {
     if (explicit_variant()) return {};
     return {{"pressure_solves", static_cast<double>(solves_)},
@@ -123,6 +118,11 @@ class MpsModel final : public ParticleFluid<D> {
   FieldHandle<std::int32_t> role_field() const { return role_; }
 
  protected:
+  void archive_model(StateArchive& a) override {
+    neighbours_.archive_state(a);  // the next step's prediction uses the last step's list
+    a(max_speed_, failure_, solves_, iterations_, unknowns_);
+  }
+
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(
         make_stage<const StepClock>("predict", [this](const StepClock& c) { predict(c.dt); }));
