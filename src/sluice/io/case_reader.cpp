@@ -210,7 +210,7 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
   index = 0;
   for (auto& joint : top.list_of_maps("joints")) c.joints.push_back(read_joint(joint, index++));
   c.body_interval = top.optional_positive("body_interval", c.probe_interval);
-  c.checkpoint_interval = top.optional_positive("checkpoint_interval", 0);
+  c.checkpoint_interval = top.optional_non_negative("checkpoint_interval", 0);  // 0: none
   if (top.has("contact")) {
     MapReader contact = top.map("contact");
     c.contact.solver = contact.optional_choice("solver", c.contact.solver, "contact solver",
