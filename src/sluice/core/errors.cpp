@@ -20,4 +20,8 @@ InputError::InputError(std::string file, int line, std::string key, const std::s
       line_(line),
       key_(std::move(key)) {}
 
+std::string diverged_at(long step, double time) {
+  return fmt::format("the run diverged at step {}, t = {:.6g} s: ", step, time);
+}
+
 }  // namespace sluice

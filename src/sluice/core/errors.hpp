@@ -29,6 +29,10 @@ class DivergenceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The start of every divergence message: "the run diverged at step N, t = T s: " (the step and
+// time where the problem was found; docs/output.md#when-a-run-stops-early).
+std::string diverged_at(long step, double time);
+
 // Exit codes of the command line, documented in README.md.
 enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitDiverged = 3 };
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 
@@ -82,10 +83,9 @@ std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const
   if (!std::isfinite(first)) return std::nullopt;
   const auto i = static_cast<std::size_t>(first);
   const Vec3 x = to_3d<D>(state_.particles.position[i]);
-  return fmt::format(
-      "the run diverged at step {}, t = {:.6g} s: particle {} at ({:.4g}, {:.4g}, "
-      "{:.4g}): {}",
-      clock.step, clock.time, i, x[0], x[1], x[2], problem_of(state_, i));
+  return diverged_at(clock.step, clock.time) +
+         fmt::format("particle {} at ({:.4g}, {:.4g}, {:.4g}): {}", i, x[0], x[1], x[2],
+                     problem_of(state_, i));
 }
 
 // What a frame shows, the model's fields marked for output included; the first time, a whole

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "sluice/core/errors.hpp"
+
 namespace sluice {
 
 namespace {
@@ -21,9 +23,9 @@ std::optional<std::string> DivergenceGuard::check(const StepClock& clock, const 
   for (std::size_t b = 0; b < bodies.count(); ++b) {
     if (const char* problem = problem_of(bodies.state(b), escape_box_, dimension_)) {
       const Vec3& x = bodies.state(b).position;
-      return fmt::format(
-          "the run diverged at step {}, t = {:.6g} s: body '{}' at ({:.4g}, {:.4g}, {:.4g}): {}",
-          clock.step, clock.time, bodies.config(b).name, x[0], x[1], x[2], problem);
+      return diverged_at(clock.step, clock.time) +
+             fmt::format("body '{}' at ({:.4g}, {:.4g}, {:.4g}): {}", bodies.config(b).name, x[0],
+                         x[1], x[2], problem);
     }
   }
   return fluid.check(clock);

@@ -83,7 +83,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   } else {
     const TimeStep first = sim.next_time_step();
     if (const auto collapsed = collapsed_step(first, first, 0, end_time, model)) {
-      throw DivergenceError(fmt::format("the run diverged at step 0, t = 0 s: {}", *collapsed));
+      throw DivergenceError(diverged_at(0, 0) + *collapsed);
     }
     schedule.first_dt = first.dt;
     schedule.first_limit = first.limit;
@@ -186,8 +186,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
       if (!problem) {
         if (const auto collapsed =
                 collapsed_step(sim.last_stable_step(), first, t, end_time, model)) {
-          problem = fmt::format("the run diverged at step {}, t = {:.6g} s: {}", sim.clock().step,
-                                t, *collapsed);
+          problem = diverged_at(sim.clock().step, t) + *collapsed;
         }
       }
       if (!problem) fluid.remember_good(t);

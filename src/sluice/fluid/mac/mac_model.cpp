@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/mac/advection.hpp"
 #include "sluice/fluid/mac/level_set.hpp"
@@ -279,10 +280,8 @@ std::optional<std::string> MacModel<D>::check(const StepClock& clock) const {
   const Lattice<D> cells = grid_.cell_lattice();
   auto report = [&](const Vec<D>& x, const char* what) {
     const Vec3 p = to_3d<D>(x);
-    return fmt::format(
-        "the run diverged at step {}, t = {:.6g} s: the cell at ({:.4g}, {:.4g}, "
-        "{:.4g}): {}",
-        clock.step, clock.time, p[0], p[1], p[2], what);
+    return diverged_at(clock.step, clock.time) +
+           fmt::format("the cell at ({:.4g}, {:.4g}, {:.4g}): {}", p[0], p[1], p[2], what);
   };
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (!std::isfinite(surface_.phi()[k]))
