@@ -14,6 +14,7 @@ namespace sluice::io {
 namespace {
 
 using test_support::ScratchDir;
+using namespace std::string_literals;
 
 CheckpointHeader sample_header() {
   CheckpointHeader h;
@@ -49,7 +50,7 @@ std::string refusal(const std::filesystem::path& path) {
 TEST(CheckpointFile, ReadsBackHeaderAndStateAndLeavesNoTemporary) {
   ScratchDir dir("checkpoint_file");
   const std::string path = (dir / "a.ckpt").string();
-  const std::string state("\0\1\2 state bytes \xff", 19);
+  const std::string state = "\0\1\2 state bytes \xff"s;  // with NULs: not a C string
   write_checkpoint(path, sample_header(), state);
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
   const Checkpoint c = read_checkpoint(path);
