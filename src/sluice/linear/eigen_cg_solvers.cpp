@@ -31,7 +31,34 @@ class EigenCg final : public SparseSolver {
   Eigen::ConjugateGradient<SparseRows, Eigen::Lower | Eigen::Upper, Preconditioner> cg_;
 };
 
+// For the systems that are not symmetric (MPS with extrapolated wall pressures).
+class EigenBicgstab final : public SparseSolver {
+ public:
+  explicit EigenBicgstab(const SolverSettings& settings) {
+    solver_.setTolerance(settings.tolerance);
+    solver_.setMaxIterations(settings.max_iterations);
+  }
+
+  SolveReport solve(const SparseRows& a, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    solver_.compute(a);
+    SolveReport report;
+    if (solver_.info() != Eigen::Success) return report;
+    x = solver_.solveWithGuess(b, x);
+    report.iterations = static_cast<int>(solver_.iterations());
+    report.relative_residual = solver_.error();
+    report.converged = solver_.info() == Eigen::Success;
+    return report;
+  }
+
+ private:
+  Eigen::BiCGSTAB<SparseRows, Eigen::DiagonalPreconditioner<double>> solver_;
+};
+
 }  // namespace
+
+std::unique_ptr<SparseSolver> make_eigen_bicgstab(const SolverSettings& settings) {
+  return std::make_unique<EigenBicgstab>(settings);
+}
 
 std::unique_ptr<SparseSolver> make_eigen_cg(CgPreconditioner preconditioner,
                                             const SolverSettings& settings) {

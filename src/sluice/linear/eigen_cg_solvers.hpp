@@ -9,5 +9,8 @@ enum class CgPreconditioner { kDiagonal, kIncompleteCholesky };
 
 std::unique_ptr<SparseSolver> make_eigen_cg(CgPreconditioner preconditioner,
                                             const SolverSettings& settings);
+// Eigen's stabilised biconjugate gradient with a diagonal preconditioner: for systems that are
+// not symmetric.
+std::unique_ptr<SparseSolver> make_eigen_bicgstab(const SolverSettings& settings);
 
 }  // namespace sluice

@@ -1,8 +1,9 @@
-// Iterative solvers for the sparse symmetric positive definite systems of the implicit models
-// (the MPS pressure equation), behind one interface so that a model names its solver in the
-// case file: Eigen's conjugate gradient with a diagonal or incomplete-Cholesky preconditioner,
-// and hypre's BoomerAMG as the preconditioner of hypre's conjugate gradient when sluice is
-// built with hypre (docs/performance.md compares them).
+// Iterative solvers for the sparse systems of the implicit models (the MPS pressure equation),
+// behind one interface so that a model names its solver in the case file: for symmetric
+// positive definite ones, Eigen's conjugate gradient with a diagonal or incomplete-Cholesky
+// preconditioner, and hypre's BoomerAMG as the preconditioner of hypre's conjugate gradient
+// when sluice is built with hypre (docs/performance.md compares them); for those that are not
+// symmetric, Eigen's BiCGSTAB with a diagonal preconditioner.
 #pragma once
 
 #include <Eigen/Core>
@@ -31,8 +32,9 @@ struct SolveReport {
 class SparseSolver {
  public:
   virtual ~SparseSolver() = default;
-  // Solves a x = b for a symmetric positive definite `a`, starting from the x given (a warm
-  // start from the last solution saves iterations when the systems change slowly).
+  // Solves a x = b (for the conjugate gradients, `a` symmetric positive definite), starting
+  // from the x given (a warm start from the last solution saves iterations when the systems
+  // change slowly).
   virtual SolveReport solve(const SparseRows& a, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
 };
 

@@ -7,7 +7,7 @@
 namespace sluice {
 
 std::vector<std::string> sparse_solver_names() {
-  std::vector<std::string> names{"cg_diagonal", "cg_incomplete_cholesky"};
+  std::vector<std::string> names{"cg_diagonal", "cg_incomplete_cholesky", "bicgstab_diagonal"};
 #ifdef SLUICE_WITH_HYPRE
   names.push_back("boomeramg");
 #endif
@@ -17,6 +17,7 @@ std::vector<std::string> sparse_solver_names() {
 std::unique_ptr<SparseSolver> make_sparse_solver(const std::string& name,
                                                  const SolverSettings& settings) {
   if (name == "cg_diagonal") return make_eigen_cg(CgPreconditioner::kDiagonal, settings);
+  if (name == "bicgstab_diagonal") return make_eigen_bicgstab(settings);
   if (name == "cg_incomplete_cholesky") {
     return make_eigen_cg(CgPreconditioner::kIncompleteCholesky, settings);
   }

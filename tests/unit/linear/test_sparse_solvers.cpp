@@ -1,19 +1,24 @@
 // Every sparse solver this build offers solves a 2D Poisson problem (5-point Laplacian plus a
-// small diagonal shift) to its tolerance, from a cold and from a warm start.
+// small diagonal shift) to its tolerance, from a cold and from a warm start; BiCGSTAB also one
+// that is not symmetric.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "sluice/linear/sparse_solver.hpp"
 
 namespace sluice {
 namespace {
 
-SparseRows poisson(int side, double shift) {
+// `upwind` > 0 adds a one-sided difference in i (a convection term): the matrix is then not
+// symmetric.
+SparseRows poisson(int side, double shift, double upwind = 0) {
   std::vector<Eigen::Triplet<double>> entries;
   const auto at = [side](int i, int j) { return i + side * j; };
   for (int j = 0; j < side; ++j) {
     for (int i = 0; i < side; ++i) {
-      entries.emplace_back(at(i, j), at(i, j), 4 + shift);
-      if (i > 0) entries.emplace_back(at(i, j), at(i - 1, j), -1);
+      entries.emplace_back(at(i, j), at(i, j), 4 + shift + upwind);
+      if (i > 0) entries.emplace_back(at(i, j), at(i - 1, j), -1 - upwind);
       if (i + 1 < side) entries.emplace_back(at(i, j), at(i + 1, j), -1);
       if (j > 0) entries.emplace_back(at(i, j), at(i, j - 1), -1);
       if (j + 1 < side) entries.emplace_back(at(i, j), at(i, j + 1), -1);
@@ -46,6 +51,20 @@ TEST(SparseSolvers, EachSolvesAPoissonProblem) {
     EXPECT_TRUE(warm.converged);
     EXPECT_LE(warm.iterations, 1);
   }
+}
+
+TEST(SparseSolvers, BicgstabSolvesASystemThatIsNotSymmetric) {
+  const SparseRows a = poisson(40, 1e-3, 2.0);
+  ASSERT_GT((SparseRows(a.transpose()) - a).norm(), 1.0);
+  Eigen::VectorXd expected(a.rows());
+  for (Eigen::Index k = 0; k < expected.size(); ++k) expected[k] = std::cos(0.02 * k) + 2;
+  const Eigen::VectorXd b = a * expected;
+  auto solver = make_sparse_solver("bicgstab_diagonal", SolverSettings{1e-10, 1000});
+  ASSERT_NE(solver, nullptr);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(a.rows());
+  const SolveReport report = solver->solve(a, b, x);
+  EXPECT_TRUE(report.converged);
+  EXPECT_LT((x - expected).norm() / expected.norm(), 1e-6);
 }
 
 TEST(SparseSolvers, ReportsAFailureToConverge) {

@@ -3,8 +3,9 @@
 // the neighbour sort the particle number density n* finds the free surface; the pressure comes
 // from the pressure Poisson equation (incompressible variant) or from n* through an equation
 // of state (explicit variant); the pressure gradient corrects velocity and position.
-// Walls and bodies are particles: their first layer (boundary particles) takes part in the
-// pressure equation, the layers behind it (dummies) only fill the number density.
+// Walls and bodies are particles: their first layer (boundary particles) and the layers behind
+// it (dummies) fill the number density; their pressures are extrapolated from the fluid (the
+// default) or, for the first layer only, solved in rows of their own (pressure_equation.hpp).
 #pragma once
 
 #include <fmt/format.h>
@@ -54,7 +55,7 @@ class MpsModel final : public ParticleFluid<D> {
   std::string describe() const override {
     return fmt::format(
         "mps ({}): r_e = {:.4g} m ({} dx), n0 = {:.4g}, {}lambda = {:.4g} dx^2, beta = {}, "
-        "gamma = {}, alpha = {:.3g} 1/Pa ({} form), negative pressure {}, {}",
+        "gamma = {}, alpha = {:.3g} 1/Pa ({} form), negative pressure {}, wall pressure {}, {}",
         explicit_variant() ? "explicit" : "incompressible", weight_.re, p_.re_over_dx, lattice_.n0,
         laplacian_weight_.re == weight_.re
             ? std::string()
@@ -63,6 +64,7 @@ class MpsModel final : public ParticleFluid<D> {
         laplacian_lattice_.lambda / (this->state().spacing * this->state().spacing),
         p_.surface_threshold, p_.source_relaxation, p_.compressibility,
         p_.pressure_memory ? "rate" : "ikeda", p_.keep_negative_pressure ? "kept" : "clamped",
+        extrapolated_walls() ? "extrapolated" : "solved",
         explicit_variant()
             ? fmt::format("c0 = {:.4g} m/s", p_.sound_speed)
             : fmt::format("solver {} (tolerance {:.3g})", p_.solver, p_.solver_settings.tolerance));
@@ -165,6 +167,9 @@ class MpsModel final : public ParticleFluid<D> {
 
  private:
   bool explicit_variant() const { return p_.variant == MpsVariant::kExplicit; }
+  bool extrapolated_walls() const {
+    return !explicit_variant() && p_.wall_pressure == MpsWallPressure::kExtrapolated;
+  }
 
   // Boundary particles are the wall and body particles within one spacing of the surface
   // (the layer dx/2 under it); the deeper ones are dummies.
@@ -195,9 +200,10 @@ class MpsModel final : public ParticleFluid<D> {
   // and boundary particles that the fluid reaches.
   bool pressure_neighbour(std::size_t j) const { return active_[j] != 0; }
 
-  // Rows for the fluid and for the boundary particles that have fluid in the cells around them
-  // (a prefix count of fluid over the cell-sorted particles answers that per cell range): dry
-  // walls, most of a tall tank, cost nothing.
+  // Rows for the fluid and for the wall particles that have fluid in the cells around them
+  // (the boundary layer; with extrapolated walls the dummies too, whose pressures the fluid's
+  // gradient reads). A prefix count of fluid over the cell-sorted particles answers that per
+  // cell range: dry walls, most of a tall tank, cost nothing.
   void build_neighbours() {
     auto& s = this->state();
     const auto& ps = s.particles;
@@ -207,7 +213,8 @@ class MpsModel final : public ParticleFluid<D> {
     for (std::size_t j = 0; j < ps.size(); ++j)
       fluid_before_[j + 1] = fluid_before_[j] + (ps.is_fluid(j) ? 1 : 0);
     neighbours_.build(ps.position, s.cells, s.cells.radius(), [&](std::size_t i) {
-      if (role[i] != kMpsBoundary) return role[i] == kMpsFluid;
+      if (role[i] == kMpsFluid) return true;
+      if (role[i] == kMpsDummy && !extrapolated_walls()) return false;
       bool wet = false;
       s.cells.for_each_candidate_range(ps.position[i], [&](std::uint32_t begin, std::uint32_t end) {
         wet = wet || fluid_before_[end] > fluid_before_[begin];
@@ -282,8 +289,8 @@ class MpsModel final : public ParticleFluid<D> {
 
   // Number density n*, and the free surface: n* < beta n0, confirmed by fewer neighbours than
   // surface_count_ratio of a full lattice's (Tanaka & Masunaga 2010), so that an inner particle
-  // whose density dips is not taken for a surface one. Boundary particles that no fluid
-  // particle reaches are inactive: no pressure, and out of the fluid's operators.
+  // whose density dips is not taken for a surface one. Wall particles that no fluid particle
+  // reaches are inactive: no pressure, and out of the fluid's operators.
   void find_surface() {
     auto& ps = this->state().particles;
     const MpsOperators<D> op = operators();
@@ -297,7 +304,7 @@ class MpsModel final : public ParticleFluid<D> {
     exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
       surface[i] = 0;
       n[i] = 0;
-      if (role[i] == kMpsDummy) return;
+      if (role[i] == kMpsDummy && !extrapolated_walls()) return;
       int count = 0;
       n[i] = op.number_density(i, all, count);
       surface[i] = (n[i] < dense && count < crowded) ? 1 : 0;
@@ -309,6 +316,12 @@ class MpsModel final : public ParticleFluid<D> {
       }
       active_[i] = reached ? 1 : 0;
     });
+    extrapolated_.assign(ps.size(), 0);
+    if (extrapolated_walls()) {
+      exec::Default::for_each(ps.size(), [&](std::size_t i) {
+        extrapolated_[i] = (role[i] != kMpsFluid && active_[i]) ? 1 : 0;
+      });
+    }
   }
 
   PressureEquationInputs<D> inputs(Real dt) const {
@@ -320,6 +333,7 @@ class MpsModel final : public ParticleFluid<D> {
     in.relaxation = p_.source_relaxation;
     in.compressibility = p_.compressibility;
     in.pressure_memory = p_.pressure_memory;
+    if (extrapolated_walls()) in.extrapolated = &extrapolated_;
     return in;
   }
 
@@ -399,7 +413,7 @@ class MpsModel final : public ParticleFluid<D> {
   BodySurfacePressure surface_pressure_;
   FieldHandle<std::int32_t> role_, surface_;
   FieldHandle<Real> number_density_;
-  std::vector<std::uint8_t> active_;
+  std::vector<std::uint8_t> active_, extrapolated_;
   std::vector<std::uint32_t> fluid_before_;  // fluid among particles [0, k), cell-sorted  // per
                                              // particle, valid from the number density stage on
   std::vector<Vec<D>> velocity_scratch_;

@@ -44,6 +44,9 @@ class MpsOperators {
 
   const MpsLatticeConstants& lattice() const { return lattice_; }
   const NeighbourList<D>& neighbours() const { return neighbours_; }
+  const Vec<D>& position(std::size_t i) const { return x_[i]; }
+  // w_ij, the weight of j in i's number density.
+  Real weight(std::size_t i, std::size_t j) const { return w_((x_[j] - x_[i]).norm()); }
   // The coefficient of (f_j - f_i) in the Laplacian: 2d / (lambda n0) w_ij.
   Real laplacian_coefficient(std::size_t i, std::size_t j) const {
     return laplacian_factor_ * laplacian_w_((x_[j] - x_[i]).norm());

@@ -62,7 +62,21 @@ MpsParameters read_mps_parameters(const io::CaseConfig& config) {
   p.sound_speed = model.optional_positive("sound_speed", 0);
   p.speed_factor = model.optional_positive("speed_factor", p.speed_factor);
   p.max_speed = model.optional_positive("max_speed", 0);
-  p.solver = model.optional_choice("solver", p.solver, "solver", sparse_solver_names());
+  p.wall_pressure = model.optional_choice("wall_pressure", "extrapolated", "wall-pressure rule",
+                                          {"extrapolated", "solved"}) == "solved"
+                        ? MpsWallPressure::kSolved
+                        : MpsWallPressure::kExtrapolated;
+  // The explicit variant solves nothing: its walls take the pressure of their own density.
+  const bool symmetric =
+      p.wall_pressure == MpsWallPressure::kSolved || p.variant == MpsVariant::kExplicit;
+  p.solver = model.optional_choice("solver", symmetric ? "cg_diagonal" : "bicgstab_diagonal",
+                                   "solver", sparse_solver_names());
+  if (!symmetric && p.solver != "bicgstab_diagonal") {
+    model.fail("solver", fmt::format("{} needs a symmetric system, and extrapolated wall "
+                                     "pressures make one that is not: use bicgstab_diagonal, or "
+                                     "wall_pressure: solved",
+                                     p.solver));
+  }
   p.solver_settings.tolerance =
       model.optional_positive("solver_tolerance", p.solver_settings.tolerance);
   if (p.solver_settings.tolerance >= 1) {

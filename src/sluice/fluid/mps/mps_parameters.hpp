@@ -14,6 +14,12 @@ enum class MpsVariant {
   kExplicit,        // pressure from the number density through an equation of state
 };
 
+// Where the walls' and bodies' particles get their pressure.
+enum class MpsWallPressure {
+  kExtrapolated,  // from the fluid around them, by a Neumann condition (not symmetric)
+  kSolved,        // a Poisson row of their own, first layer only (Koshizuka & Oka 1996)
+};
+
 struct MpsParameters {
   MpsVariant variant = MpsVariant::kIncompressible;
   double re_over_dx = 2.1;            // C_e: effective radius r_e = C_e l0
@@ -24,7 +30,8 @@ struct MpsParameters {
   double compressibility = 4.5e-10;   // alpha in 1/Pa (water's own)
   bool pressure_memory = true;        // false: Ikeda's form, which forgets p^n (comparison)
   bool keep_negative_pressure = false;
-  bool gradient_correction = true;     // the corrective matrix in the pressure gradient
+  bool gradient_correction = true;  // the corrective matrix in the pressure gradient
+  MpsWallPressure wall_pressure = MpsWallPressure::kExtrapolated;
   double artificial_viscosity = 0.05;  // explicit variant: nu_a = alpha c0 l0
   double collision_distance = 0.85;    // in l0; 0 turns the collision model off
   double collision_restitution = 0.2;
@@ -32,7 +39,7 @@ struct MpsParameters {
   double sound_speed = 0;  // explicit variant's c0; 0 = speed_factor * max_speed
   double speed_factor = 10;
   double max_speed = 0;  // expected largest speed; 0 = sqrt(2 g H)
-  std::string solver = "cg_diagonal";
+  std::string solver;    // default: bicgstab_diagonal (extrapolated walls), cg_diagonal (solved)
   SolverSettings solver_settings;
 };
 

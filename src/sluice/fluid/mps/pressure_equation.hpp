@@ -9,7 +9,21 @@
 // pressure p^n (memory m = 1, the default). Without it (m = 0, Ikeda's form) every step
 // forgets the pressure the fluid already holds and the water settles compressed: a still tank
 // 1 m deep sinks 7.5 % at alpha = 2.55e-7 1/Pa (docs/validation.md, F2).
-// Written as A p = b with A = -lap + alpha rho / dt^2, which is symmetric positive definite.
+// Written as A p = b with A = -lap + alpha rho / dt^2.
+// Walls and bodies, two ways:
+// - extrapolated (the default): every wall and body particle the fluid reaches, dummies
+//   included, takes the pressure of its fluid neighbours f carried to it by the projection's
+//   Neumann condition, dp/dn = rho / dt (u* - u_w) . n (hydrostatic at rest; Adami, Hu & Adams
+//   2012 extrapolate alike in SPH):
+//     sum_f w_wf (p_w - p_f) = sum_f w_wf rho / dt (u*_f - u_w) . (x_w - x_f)
+//   and the fluid's divergence is summed over fluid only: the wall enters once, through its
+//   pressure. A fluid row then sees a full neighbourhood, and still water keeps its hydrostatic
+//   pressure under a lid or a held body. A is not symmetric: BiCGSTAB solves it.
+// - solved: the first wall layer has Poisson rows of its own, its divergence taken against the
+//   wall's velocity, and the dummies behind it fill the number density only (Koshizuka & Oka
+//   1996). A is symmetric positive definite. Those rows' source is about half what their
+//   one-sided Laplacian needs at rest, which the water under a lid cannot make up
+//   (docs/validation.md, B5).
 // Each row is assembled by one thread straight into the compressed sparse rows; the solve
 // starts from the last pressure.
 #pragma once
@@ -37,6 +51,9 @@ struct PressureEquationInputs {
   Real relaxation = 0;          // gamma
   Real compressibility = 0;     // alpha, 1/Pa
   bool pressure_memory = true;  // m: the divergence part's compressibility as a rate
+  // 1 for the wall and body particles whose pressure is extrapolated from the fluid around
+  // them; nullptr: every active boundary particle has a Poisson row of its own.
+  const std::vector<std::uint8_t>* extrapolated = nullptr;
 };
 
 struct PressureEquationReport {
@@ -57,11 +74,14 @@ class PressureEquation {
 
   void assemble(const PressureEquationInputs<D>& in) {
     const std::size_t n = in.active.size();
+    const auto wall = [&](std::size_t j) {
+      return in.extrapolated != nullptr && (*in.extrapolated)[j] != 0;
+    };
     // Unknowns numbered in particle order, so each row's columns come out sorted.
     row_of_.assign(n, -1);
     int unknowns = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (in.active[i] && !in.surface[i]) row_of_[i] = unknowns++;
+      if (in.active[i] && (wall(i) || !in.surface[i])) row_of_[i] = unknowns++;
     }
     particle_of_.resize(static_cast<std::size_t>(unknowns));
     for (std::size_t i = 0; i < n; ++i) {
@@ -69,6 +89,14 @@ class PressureEquation {
     }
     const MpsOperators<D>& op = in.op;
     const auto unknown = [&](std::size_t j) { return row_of_[j] >= 0; };
+    // A wall row: p_w - sum_f a_wf p_f = sum_f a_wf rho / dt (u*_f - u_w) . (x_w - x_f), over
+    // its fluid neighbours f with a_wf = w_wf / sum w (a Neumann condition); a fluid row: the
+    // Laplacian over every active neighbour.
+    const auto in_row = [&](std::size_t i, std::size_t j) {
+      if (!in.active[j]) return false;
+      if (wall(i)) return !wall(j) && op.weight(i, j) > 0;
+      return op.laplacian_coefficient(i, j) > 0;
+    };
     // Pass 1: entries per row (the diagonal and the unknown neighbours in reach).
     matrix_.resize(unknowns, unknowns);
     int* start = matrix_.outerIndexPtr();
@@ -77,7 +105,7 @@ class PressureEquation {
       const std::size_t i = particle_of_[r];
       int count = 0;
       op.neighbours().for_each(i, [&](std::size_t j) {
-        if (unknown(j) && op.laplacian_coefficient(i, j) > 0) ++count;
+        if (unknown(j) && in_row(i, j)) ++count;
       });
       start[r + 1] = count + 1;
     });
@@ -94,15 +122,22 @@ class PressureEquation {
     int* column = matrix_.innerIndexPtr();
     double* value = matrix_.valuePtr();
     const auto all = [](std::size_t) { return true; };
+    const auto fluid = [&](std::size_t j) { return !wall(j); };
     exec::Default::for_each_balanced(particle_of_.size(), [&](std::size_t r) {
       const std::size_t i = particle_of_[r];
       int k = start[r];
       int diagonal = -1;
-      Real sum = 0;
+      Real sum = 0, source = 0;
       op.neighbours().for_each(i, [&](std::size_t j) {
-        if (!in.active[j]) return;
-        const Real c = op.laplacian_coefficient(i, j);
-        if (c <= 0) return;
+        if (!in_row(i, j)) return;
+        Real c = 0;
+        if (wall(i)) {
+          c = op.weight(i, j);
+          source += c * in.density * inverse_dt *
+                    (in.velocity[j] - in.velocity[i]).dot(op.position(i) - op.position(j));
+        } else {
+          c = op.laplacian_coefficient(i, j);
+        }
         sum += c;
         if (row_of_[j] < 0) return;  // p_j = 0 on the surface: only the diagonal sees it
         if (diagonal < 0 && j > i) diagonal = k++;
@@ -111,10 +146,17 @@ class PressureEquation {
       });
       if (diagonal < 0) diagonal = k++;
       column[diagonal] = static_cast<int>(r);
+      if (wall(i)) {
+        // Scaled by sum w so that the row reads like the others: sum_f w_wf (p_w - p_f) = ...
+        value[diagonal] = sum;
+        rhs_[static_cast<Eigen::Index>(r)] = source;
+        return;
+      }
       value[diagonal] = sum + compressibility;
+      const Real divergence = in.extrapolated != nullptr ? op.divergence(i, in.velocity, fluid)
+                                                         : op.divergence(i, in.velocity, all);
       rhs_[static_cast<Eigen::Index>(r)] = density_source * (in.number_density[i] - n0) / n0 -
-                                           divergence_source * op.divergence(i, in.velocity, all) +
-                                           memory * in.pressure[i];
+                                           divergence_source * divergence + memory * in.pressure[i];
     });
     report_ = PressureEquationReport{};
     report_.unknowns = particle_of_.size();
