@@ -1,8 +1,6 @@
 #include "sluice/io/checkpoint_file.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <cerrno>
@@ -12,6 +10,7 @@
 #include <iterator>
 
 #include "sluice/core/state_archive.hpp"
+#include "sluice/io/atomic_file.hpp"
 
 namespace sluice::io {
 
@@ -35,27 +34,6 @@ T read_raw(std::string_view bytes, std::size_t at) {
   T value;
   std::memcpy(&value, bytes.data() + at, sizeof value);
   return value;
-}
-
-[[noreturn]] void fail_write(const std::string& path, const std::string& step, int error) {
-  throw std::runtime_error(
-      fmt::format("cannot write '{}': {}: {}", path, step, std::strerror(error)));
-}
-
-void write_all(int fd, std::string_view bytes, const std::string& path) {
-  while (!bytes.empty()) {
-    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) fail_write(path, "write", errno);
-    bytes.remove_prefix(static_cast<std::size_t>(n));
-  }
-}
-
-void sync_folder(const std::filesystem::path& folder) {
-  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;  // the rename has happened; a folder that cannot be synced is no error
-  ::fsync(fd);
-  ::close(fd);
 }
 
 }  // namespace
@@ -90,30 +68,12 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& header,
   std::string suffix;
   append_raw<std::uint32_t>(suffix, static_cast<std::uint32_t>(crc));
 
-  const std::string tmp = path + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail_write(path, "open " + tmp, errno);
-  try {
-    for (std::string_view part :
-         {std::string_view(prefix), std::string_view(head), state, std::string_view(suffix)}) {
-      write_all(fd, part, path);
-    }
-    if (::fsync(fd) != 0) fail_write(path, "fsync " + tmp, errno);
-  } catch (...) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    throw;
+  AtomicFile file(path);
+  for (std::string_view part :
+       {std::string_view(prefix), std::string_view(head), state, std::string_view(suffix)}) {
+    file.write(part);
   }
-  if (::close(fd) != 0) {
-    ::unlink(tmp.c_str());
-    fail_write(path, "close " + tmp, errno);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int error = errno;
-    ::unlink(tmp.c_str());
-    fail_write(path, "rename " + tmp, error);
-  }
-  sync_folder(std::filesystem::path(path).parent_path());
+  file.commit(Commit::kDurable);
 }
 
 Checkpoint read_checkpoint(const std::string& path) {

@@ -14,6 +14,8 @@
 #include <system_error>
 #include <utility>
 
+#include "sluice/io/atomic_file.hpp"
+
 namespace sluice::io {
 
 namespace {
@@ -48,50 +50,6 @@ std::string xml_escape(std::string_view text) {
   }
   return out;
 }
-
-// Writes PATH.tmp; commit() closes it and renames it over PATH. If commit() is not reached
-// (an exception), the temporary is removed and PATH is left as it was.
-class AtomicFile {
- public:
-  explicit AtomicFile(std::string path) : path_(std::move(path)), tmp_(path_ + ".tmp") {
-    file_ = std::fopen(tmp_.c_str(), "wb");
-    if (file_ == nullptr) fail("open " + tmp_, errno);
-  }
-  ~AtomicFile() {
-    if (file_ != nullptr) std::fclose(file_);
-    if (!committed_) std::remove(tmp_.c_str());
-  }
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-
-  void write(const void* data, size_t bytes) {
-    if (bytes > 0 && std::fwrite(data, 1, bytes, file_) != bytes) fail("write " + tmp_, errno);
-  }
-  void write(std::string_view text) { write(text.data(), text.size()); }
-
-  void commit() {
-    // fclose flushes the buffer, so a full disk shows up here.
-    if (std::fclose(std::exchange(file_, nullptr)) != 0) fail("close " + tmp_, errno);
-    std::error_code error;
-    std::filesystem::rename(tmp_, path_, error);
-    if (error) {
-      throw std::runtime_error(
-          fmt::format("cannot write '{}': rename {}: {}", path_, tmp_, error.message()));
-    }
-    committed_ = true;
-  }
-
- private:
-  [[noreturn]] void fail(const std::string& step, int error) const {
-    throw std::runtime_error(
-        fmt::format("cannot write '{}': {}: {}", path_, step, std::strerror(error)));
-  }
-
-  std::string path_;
-  std::string tmp_;
-  std::FILE* file_ = nullptr;
-  bool committed_ = false;
-};
 
 // One appended block: its UInt64 byte count, then the bytes.
 void write_block(AtomicFile& out, const void* data, uint64_t bytes) {

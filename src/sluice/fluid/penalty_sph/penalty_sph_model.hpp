@@ -147,7 +147,9 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // The walls and fixed layers are gathered at the first step and never move: read back, they
   // are gathered again.
   void archive_model(StateArchive& a) override {
-    a(max_speed_, max_acceleration_, body_pressure_force_, body_impulse_, body_start_, last_dt_);
+    // The bodies' start positions and impulses are not kept: the next step's drift and its
+    // first exchange rewrite them before anything reads them.
+    a(max_speed_, max_acceleration_, body_pressure_force_);
     a(steps_, fluid_steps_, contacts_, crossings_, substeps_, force_sum_, peak_force_);
     if (a.reading() && steps_ > 0) {
       auto& ps = this->state().particles;
