@@ -109,7 +109,6 @@ TEST(HydrostaticTank2D, MpsBottomPressureAveragedOverATenthOfASecond) {
   EXPECT_LT(fastest, 0.1 * std::sqrt(g * depth));
 }
 
-
 // Water trapped under a lid (cases/lid_2d.yaml: a `box` wall 0.96 m wide with its underside at
 // 0.16 m, water 0.24 m deep), its steps shortened to land every 0.02 s as output times make
 // them. Under the lid the water must keep the open water's pressure at the same depth, and
