@@ -324,16 +324,38 @@ class MpsModel final : public ParticleFluid<D> {
     }
   }
 
-  PressureEquationInputs<D> inputs(Real dt) const {
-    const auto& ps = this->state().particles;
-    PressureEquationInputs<D> in{operators(),  ps.velocity, ps[number_density_],
-                                 ps[surface_], active_,     ps.pressure};
+  PressureEquationInputs<D> inputs(Real dt) {
+    const auto& s = this->state();
+    const auto& ps = s.particles;
+    if (extrapolated_walls()) {
+      // Each wall and body particle: g - a_w, and its velocity carried on by dt (g - a_w) for
+      // the fluid's divergence (pressure_equation.hpp).
+      wall_gravity_.assign(ps.size(), Vec<D>::Zero());
+      source_velocity_ = ps.velocity;
+      exec::Default::for_each(ps.size(), [&](std::size_t i) {
+        if (ps.is_fluid(i)) return;
+        const std::int32_t k = ps.body_point[i];
+        Vec<D> g = s.gravity;
+        if (k >= 0) g -= from_3d<D>(s.body_point_acceleration[static_cast<std::size_t>(k)]);
+        wall_gravity_[i] = g;
+        source_velocity_[i] += dt * g;
+      });
+    }
+    PressureEquationInputs<D> in{operators(),
+                                 extrapolated_walls() ? source_velocity_ : ps.velocity,
+                                 ps[number_density_],
+                                 ps[surface_],
+                                 active_,
+                                 ps.pressure};
     in.dt = dt;
     in.density = density_;
     in.relaxation = p_.source_relaxation;
     in.compressibility = p_.compressibility;
     in.pressure_memory = p_.pressure_memory;
-    if (extrapolated_walls()) in.extrapolated = &extrapolated_;
+    if (extrapolated_walls()) {
+      in.extrapolated = &extrapolated_;
+      in.wall_gravity = &wall_gravity_;
+    }
     return in;
   }
 
@@ -417,6 +439,7 @@ class MpsModel final : public ParticleFluid<D> {
   std::vector<std::uint32_t> fluid_before_;  // fluid among particles [0, k), cell-sorted  // per
                                              // particle, valid from the number density stage on
   std::vector<Vec<D>> velocity_scratch_;
+  std::vector<Vec<D>> wall_gravity_, source_velocity_;  // per particle, extrapolated walls
   Real max_speed_ = 0;
   std::optional<std::string> failure_;
   long solves_ = 0, iterations_ = 0, unknowns_ = 0;

@@ -12,13 +12,14 @@
 // Written as A p = b with A = -lap + alpha rho / dt^2.
 // Walls and bodies, two ways:
 // - extrapolated (the default): every wall and body particle the fluid reaches, dummies
-//   included, takes the pressure of its fluid neighbours f carried to it by the projection's
-//   Neumann condition, dp/dn = rho / dt (u* - u_w) . n (hydrostatic at rest; Adami, Hu & Adams
-//   2012 extrapolate alike in SPH):
-//     sum_f w_wf (p_w - p_f) = sum_f w_wf rho / dt (u*_f - u_w) . (x_w - x_f)
-//   and the fluid's divergence is summed over fluid only: the wall enters once, through its
-//   pressure. A fluid row then sees a full neighbourhood, and still water keeps its hydrostatic
-//   pressure under a lid or a held body. A is not symmetric: BiCGSTAB solves it.
+//   included, takes the pressure of its fluid neighbours f carried to it along the hydrostatic
+//   gradient of its own acceleration a_w (Adami, Hu & Adams 2012 extrapolate alike in SPH):
+//     sum_f w_wf (p_w - p_f) = sum_f w_wf rho (g - a_w) . (x_w - x_f)
+//   In the fluid's divergence the wall takes its velocity plus dt (g - a_w), the part of u* the
+//   extrapolation has answered for: still water sees no divergence at a wall, and a wall that
+//   moves into the water still pushes it through the divergence. A fluid row then sees a full
+//   neighbourhood, and still water keeps its hydrostatic pressure under a lid or a held body.
+//   A is not symmetric: BiCGSTAB solves it.
 // - solved: the first wall layer has Poisson rows of its own, its divergence taken against the
 //   wall's velocity, and the dummies behind it fill the number density only (Koshizuka & Oka
 //   1996). A is symmetric positive definite. Those rows' source is about half what their
@@ -54,6 +55,9 @@ struct PressureEquationInputs {
   // 1 for the wall and body particles whose pressure is extrapolated from the fluid around
   // them; nullptr: every active boundary particle has a Poisson row of its own.
   const std::vector<std::uint8_t>* extrapolated = nullptr;
+  // With `extrapolated`: g - a_w of each wall and body particle (`velocity` already holds its
+  // u_w + dt (g - a_w)).
+  const std::vector<Vec<D>>* wall_gravity = nullptr;
 };
 
 struct PressureEquationReport {
@@ -89,9 +93,8 @@ class PressureEquation {
     }
     const MpsOperators<D>& op = in.op;
     const auto unknown = [&](std::size_t j) { return row_of_[j] >= 0; };
-    // A wall row: p_w - sum_f a_wf p_f = sum_f a_wf rho / dt (u*_f - u_w) . (x_w - x_f), over
-    // its fluid neighbours f with a_wf = w_wf / sum w (a Neumann condition); a fluid row: the
-    // Laplacian over every active neighbour.
+    // A wall row: sum_f w_wf (p_w - p_f) = sum_f w_wf rho (g - a_w) . (x_w - x_f) over its fluid
+    // neighbours f; a fluid row: the Laplacian over every active neighbour.
     const auto in_row = [&](std::size_t i, std::size_t j) {
       if (!in.active[j]) return false;
       if (wall(i)) return !wall(j) && op.weight(i, j) > 0;
@@ -122,7 +125,6 @@ class PressureEquation {
     int* column = matrix_.innerIndexPtr();
     double* value = matrix_.valuePtr();
     const auto all = [](std::size_t) { return true; };
-    const auto fluid = [&](std::size_t j) { return !wall(j); };
     exec::Default::for_each_balanced(particle_of_.size(), [&](std::size_t r) {
       const std::size_t i = particle_of_[r];
       int k = start[r];
@@ -133,8 +135,7 @@ class PressureEquation {
         Real c = 0;
         if (wall(i)) {
           c = op.weight(i, j);
-          source += c * in.density * inverse_dt *
-                    (in.velocity[j] - in.velocity[i]).dot(op.position(i) - op.position(j));
+          source += c * in.density * (*in.wall_gravity)[i].dot(op.position(i) - op.position(j));
         } else {
           c = op.laplacian_coefficient(i, j);
         }
@@ -147,16 +148,14 @@ class PressureEquation {
       if (diagonal < 0) diagonal = k++;
       column[diagonal] = static_cast<int>(r);
       if (wall(i)) {
-        // Scaled by sum w so that the row reads like the others: sum_f w_wf (p_w - p_f) = ...
         value[diagonal] = sum;
         rhs_[static_cast<Eigen::Index>(r)] = source;
         return;
       }
       value[diagonal] = sum + compressibility;
-      const Real divergence = in.extrapolated != nullptr ? op.divergence(i, in.velocity, fluid)
-                                                         : op.divergence(i, in.velocity, all);
       rhs_[static_cast<Eigen::Index>(r)] = density_source * (in.number_density[i] - n0) / n0 -
-                                           divergence_source * divergence + memory * in.pressure[i];
+                                           divergence_source * op.divergence(i, in.velocity, all) +
+                                           memory * in.pressure[i];
     });
     report_ = PressureEquationReport{};
     report_.unknowns = particle_of_.size();
