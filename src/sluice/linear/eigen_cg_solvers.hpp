@@ -1,4 +1,4 @@
-// Eigen's preconditioned conjugate gradient (Eigen/IterativeLinearSolvers).
+// Eigen's preconditioned conjugate gradient and BiCGSTAB (Eigen/IterativeLinearSolvers).
 #pragma once
 
 #include "sluice/linear/sparse_solver.hpp"

@@ -197,7 +197,8 @@ class MpsModel final : public ParticleFluid<D> {
   }
 
   // Whether particle j takes part in the pressure equation's Laplacian and gradient: fluid,
-  // and boundary particles that the fluid reaches.
+  // and the wall particles that the fluid reaches (boundary ones; dummies too with
+  // extrapolated walls).
   bool pressure_neighbour(std::size_t j) const { return active_[j] != 0; }
 
   // Rows for the fluid and for the wall particles that have fluid in the cells around them

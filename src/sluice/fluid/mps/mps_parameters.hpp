@@ -16,7 +16,7 @@ enum class MpsVariant {
 
 // Where the walls' and bodies' particles get their pressure.
 enum class MpsWallPressure {
-  kExtrapolated,  // from the fluid around them, by a Neumann condition (not symmetric)
+  kExtrapolated,  // from the fluid around them (Adami et al. 2012); not symmetric
   kSolved,        // a Poisson row of their own, first layer only (Koshizuka & Oka 1996)
 };
 
