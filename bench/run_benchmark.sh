@@ -4,13 +4,9 @@
 # that machine noise hits both alike. Prints each run and the medians.
 # usage: bench/run_benchmark.sh [REPEAT] [END_TIME]
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/bench_setup.sh"
 repeat=${1:-3}
 end=${2:-0.025}
-sluice=build/release/sluice
-[ -x "$sluice" ] || { cmake --preset release > /dev/null && cmake --build --preset release; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 for r in $(seq 1 "$repeat"); do
   for t in 1 2; do
     "$sluice" run cases/bench_dam_break_3d.yaml --end "$end" --threads "$t" --out "$work/out" \

@@ -8,14 +8,10 @@
 # and the share of the stages.
 # usage: bench/run_constraint.sh [REPEAT] [SECONDS_2D] [SECONDS_3D]
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/bench_setup.sh"
 repeat=${1:-3}
 seconds_2d=${2:-0.7}
 seconds_3d=${3:-0.02}
-sluice=build/release/sluice
-[ -x "$sluice" ] || { cmake --preset release > /dev/null && cmake --build --preset release; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 for r in $(seq 1 "$repeat"); do
   for model in constraint wcsph; do
     "$sluice" run cases/dam_break_2d.yaml --out "$work/out" --set end_time=$seconds_2d \

@@ -8,14 +8,10 @@
 #     REPEAT times each (default 3), alternating, and the median wall time per simulated second.
 # usage: bench/run_mps.sh [REPEAT] [SECONDS] [SOLVERS]   (SOLVERS: comma-separated)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/bench_setup.sh"
 repeat=${1:-3}
 seconds=${2:-0.1}
 solvers=${3:-bicgstab_diagonal,cg_diagonal,cg_incomplete_cholesky,boomeramg}
-sluice=build/release/sluice
-[ -x "$sluice" ] || { cmake --preset release > /dev/null && cmake --build --preset release; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 case=cases/kleefsman_3d.yaml
 for dx in 0.03 0.0238 0.0189 0.015 0.0119; do
   for solver in ${solvers//,/ }; do

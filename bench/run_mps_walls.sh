@@ -6,12 +6,8 @@
 # the time of the neighbour list, assembly and solve.
 # usage: bench/run_mps_walls.sh [REPEAT]
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/bench_setup.sh"
 repeat=${1:-3}
-sluice=build/release/sluice
-[ -x "$sluice" ] || { cmake --preset release > /dev/null && cmake --build --preset release; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 for r in $(seq 1 "$repeat"); do
   for walls in extrapolated solved; do
     "$sluice" run cases/dam_break_2d_mps.yaml --out "$work/out" --set end_time=0.3 \

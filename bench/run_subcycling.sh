@@ -4,12 +4,8 @@
 # alternating so that machine noise hits both alike. Prints each run and the medians.
 # usage: bench/run_subcycling.sh [REPEAT]
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/bench_setup.sh"
 repeat=${1:-3}
-sluice=build/release/sluice
-[ -x "$sluice" ] || { cmake --preset release > /dev/null && cmake --build --preset release; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 for r in $(seq 1 "$repeat"); do
   for mode in true false; do
     "$sluice" run cases/subcycling_2d.yaml --set contact.subcycling=$mode --out "$work/out" \
