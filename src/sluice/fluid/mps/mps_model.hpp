@@ -317,24 +317,20 @@ class MpsModel final : public ParticleFluid<D> {
       }
       active_[i] = reached ? 1 : 0;
     });
-    extrapolated_.assign(ps.size(), 0);
-    if (extrapolated_walls()) {
-      exec::Default::for_each(ps.size(), [&](std::size_t i) {
-        extrapolated_[i] = (role[i] != kMpsFluid && active_[i]) ? 1 : 0;
-      });
-    }
   }
 
   PressureEquationInputs<D> inputs(Real dt) {
     const auto& s = this->state();
     const auto& ps = s.particles;
     if (extrapolated_walls()) {
-      // Each wall and body particle: g - a_w, and its velocity carried on by dt (g - a_w) for
-      // the fluid's divergence (pressure_equation.hpp).
+      // Each wall and body particle: whether the fluid reaches it, g - a_w, and its velocity
+      // carried on by dt (g - a_w) for the fluid's divergence (pressure_equation.hpp).
+      extrapolated_.assign(ps.size(), 0);
       wall_gravity_.assign(ps.size(), Vec<D>::Zero());
       source_velocity_ = ps.velocity;
       exec::Default::for_each(ps.size(), [&](std::size_t i) {
         if (ps.is_fluid(i)) return;
+        extrapolated_[i] = active_[i];
         const std::int32_t k = ps.body_point[i];
         Vec<D> g = s.gravity;
         if (k >= 0) g -= from_3d<D>(s.body_point_acceleration[static_cast<std::size_t>(k)]);

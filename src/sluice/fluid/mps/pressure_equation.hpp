@@ -95,10 +95,11 @@ class PressureEquation {
     const auto unknown = [&](std::size_t j) { return row_of_[j] >= 0; };
     // A wall row: sum_f w_wf (p_w - p_f) = sum_f w_wf rho (g - a_w) . (x_w - x_f) over its fluid
     // neighbours f; a fluid row: the Laplacian over every active neighbour.
-    const auto in_row = [&](std::size_t i, std::size_t j) {
-      if (!in.active[j]) return false;
-      if (wall(i)) return !wall(j) && op.weight(i, j) > 0;
-      return op.laplacian_coefficient(i, j) > 0;
+    // The coefficient of p_j in row i, zero for a particle outside the row.
+    const auto coefficient = [&](std::size_t i, std::size_t j) -> Real {
+      if (!in.active[j]) return 0;
+      if (wall(i)) return wall(j) ? 0 : op.weight(i, j);
+      return op.laplacian_coefficient(i, j);
     };
     // Pass 1: entries per row (the diagonal and the unknown neighbours in reach).
     matrix_.resize(unknowns, unknowns);
@@ -108,7 +109,7 @@ class PressureEquation {
       const std::size_t i = particle_of_[r];
       int count = 0;
       op.neighbours().for_each(i, [&](std::size_t j) {
-        if (unknown(j) && in_row(i, j)) ++count;
+        if (unknown(j) && coefficient(i, j) > 0) ++count;
       });
       start[r + 1] = count + 1;
     });
@@ -131,13 +132,10 @@ class PressureEquation {
       int diagonal = -1;
       Real sum = 0, source = 0;
       op.neighbours().for_each(i, [&](std::size_t j) {
-        if (!in_row(i, j)) return;
-        Real c = 0;
+        const Real c = coefficient(i, j);
+        if (c <= 0) return;
         if (wall(i)) {
-          c = op.weight(i, j);
           source += c * in.density * (*in.wall_gravity)[i].dot(op.position(i) - op.position(j));
-        } else {
-          c = op.laplacian_coefficient(i, j);
         }
         sum += c;
         if (row_of_[j] < 0) return;  // p_j = 0 on the surface: only the diagonal sees it
