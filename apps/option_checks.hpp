@@ -39,4 +39,14 @@ inline CLI::Validator positive_seconds() {
       "SECONDS > 0");
 }
 
+// Where a run's loops run: --device.
+inline CLI::Validator device_name() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (text == "cpu" || text == "gpu" || text == "emulated") return {};
+        return "expected cpu, gpu or emulated, got '" + text + "'";
+      },
+      "cpu|gpu|emulated");
+}
+
 }  // namespace sluice

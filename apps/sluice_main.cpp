@@ -55,7 +55,7 @@ void print_summary(const sluice::RunSummary& r) {
 int main(int argc, char** argv) {
   CLI::App app{"sluice: free-surface flow with rigid bodies (particle methods)"};
   app.require_subcommand(1);
-  std::string case_path, out_dir, stats_path, resume_dir;
+  std::string case_path, out_dir, stats_path, resume_dir, device;
   std::vector<std::string> overrides;
   int threads = 0;
   double end_time = 0;
@@ -73,11 +73,16 @@ int main(int argc, char** argv) {
       ->check(sluice::positive_seconds());
   run->add_option("--set", overrides, "override a case key: key.path=value (repeatable)");
   run->add_option("--stats", stats_path, "write run statistics as JSON to this file");
+  const char* device_help =
+      "where the loops run: cpu (default), gpu (CUDA; the wcsph model), emulated (the GPU's "
+      "steps on the host's threads)";
+  run->add_option("--device", device, device_help)->check(sluice::device_name());
 
   CLI::App* check =
       app.add_subcommand("check", "validate a case and report its size; runs nothing");
   check->add_option("CASE", case_path, "case file (YAML)")->required();
   check->add_option("--set", overrides, "override a case key: key.path=value (repeatable)");
+  check->add_option("--device", device, device_help)->check(sluice::device_name());
 
   sluice::SweepOptions sweep_options;
   CLI::App* sweep = app.add_subcommand(
@@ -128,6 +133,16 @@ int main(int argc, char** argv) {
       return sluice::run_compare(compare_options);
     }
     sluice::exec::set_thread_count(threads);
+    if (!device.empty() && device != "cpu") {
+      // model.device is the wcsph model's key: name the option, not an unknown key.
+      const std::string model = sluice::io::read_case(case_path, overrides).model_name;
+      if (model != "wcsph") {
+        fmt::print(stderr, "error: --device: the {} device runs the wcsph model only, not '{}'\n",
+                   device, model);
+        return sluice::kExitBadInput;
+      }
+      overrides.push_back("model.device=" + device);
+    }
     const sluice::io::CaseConfig config = sluice::io::read_case(case_path, overrides);
     if (check->parsed()) {
       const auto c = sluice::check_case(config);

@@ -19,5 +19,6 @@ function(sluice_target_arch target arch)
     endif()
   endif()
   message(STATUS "sluice: building for -march=${arch}")
-  target_compile_options(${target} INTERFACE -march=${arch})
+  target_compile_options(${target} INTERFACE $<$<COMPILE_LANGUAGE:C,CXX>:-march=${arch}>
+                                             $<$<COMPILE_LANGUAGE:CUDA>:-Xcompiler=-march=${arch}>)
 endfunction()

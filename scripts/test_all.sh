@@ -11,9 +11,9 @@ bash scripts/setup.sh
 jobs=$(nproc)
 
 echo "== format check"
-bad=$(find src apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format --dry-run -Werror 2>&1 | grep -c 'error:' || true)
+bad=$(find src apps tests bench -name '*.cpp' -o -name '*.hpp' -o -name '*.cu' -o -name '*.cuh' | xargs clang-format --dry-run -Werror 2>&1 | grep -c 'error:' || true)
 if [ "$bad" != "0" ]; then
-  find src apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format --dry-run -Werror
+  find src apps tests bench -name '*.cpp' -o -name '*.hpp' -o -name '*.cu' -o -name '*.cuh' | xargs clang-format --dry-run -Werror
   exit 1
 fi
 

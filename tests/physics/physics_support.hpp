@@ -43,4 +43,11 @@ auto on_one_and_two_threads(Run&& run) {
 // with `overrides`) and Koshizuka & Oka's (1996) over t in [0, 0.70] s.
 double dam_break_front_rms(const std::vector<std::string>& overrides);
 
+// B1: the floating box's mean draft [m] over the last 4 s of cases/floating_box_2d.yaml (with
+// `overrides`), and how far it drifted sideways [m].
+struct FloatingBoxDraft {
+  double draft = 0, drift = 0;
+};
+FloatingBoxDraft floating_box_draft(const std::vector<std::string>& overrides);
+
 }  // namespace sluice::testing

@@ -52,12 +52,13 @@ TEST(CaseHertzImpact, ContactTimeAndPeakOverlap) {
   EXPECT_NEAR(deepest, peak, 0.05 * peak);
 }
 
+}  // namespace
+
 // B1: the floating box settles at a draft of 0.70 m within 3 %, without drifting sideways.
 // The draft follows from the water's area (conserved) and the box's height: with water level h,
-// 3 h = A + 1 d and d = h - (z - 0.5). The mean is taken over the last two heave periods.
-// B1 with a model: the mean draft over the last 4 s of the 6 s run.
-void floating_box_draft(const std::string& model, double drift_bar = 0.01) {
-  Simulation<2> sim(testing::load_case("floating_box_2d.yaml", {"model.name=" + model}));
+// 3 h = A + 1 d and d = h - (z - 0.5). The mean is taken over the last 4 s of the 6 s run.
+testing::FloatingBoxDraft testing::floating_box_draft(const std::vector<std::string>& overrides) {
+  Simulation<2> sim(testing::load_case("floating_box_2d.yaml", overrides));
   const double area = sim.fluid().energy().mass / sim.config().fluid.density;
   const double x0 = sim.bodies().state(0).position[0];
   double sum = 0, drift = 0;
@@ -71,7 +72,14 @@ void floating_box_draft(const std::string& model, double drift_bar = 0.01) {
       ++samples;
     }
   });
-  const double draft = sum / samples;
+  return {sum / samples, drift};
+}
+
+namespace {
+
+// B1 with a model.
+void floating_box_draft(const std::string& model, double drift_bar = 0.01) {
+  const auto [draft, drift] = testing::floating_box_draft({"model.name=" + model});
   std::printf(
       "B1 (case, %s): mean draft %.4f m (Archimedes 0.70, %.2f %%), sideways drift %.3g mm\n",
       model.c_str(), draft, 100 * (draft - 0.7) / 0.7, 1e3 * drift);

@@ -93,6 +93,11 @@ const ResumeCase kCases[] = {
     {"granular_with_a_body", "granular_floating_box_2d.yaml", 0.2, {}},
     {"mac", "dam_break_2d.yaml", 0.2, {"spacing=0.05", "model={name: mac, cell_size: 0.05}"}},
     {"wcsph_bodies_in_contact", "subcycling_2d.yaml", 0.2, {"spacing=0.02"}},
+    // The device run (here on the host's threads): its particles written and read back.
+    {"wcsph_device_bodies_in_contact",
+     "subcycling_2d.yaml",
+     0.2,
+     {"spacing=0.02", "model.device=emulated"}},
     {"wcsph_3d_cubes", "dam_break_cubes_3.yaml", 0.04, {"spacing=0.05"}},
     {"bodies_alone_joints", "pendulum.yaml", 0.4, {}},
     {"bodies_alone_complementarity", "sphere_stack.yaml", 0.4, {}},

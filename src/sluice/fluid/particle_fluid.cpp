@@ -132,12 +132,16 @@ void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_
   model_stages(before_bodies, after_bodies);
   // The engine's own stage, ahead of the model's later ones: sort the particles by cell so
   // that neighbours sit close in memory.
-  auto neighbours = make_stage<const StepClock>("neighbours", [this](const StepClock&) {
-    keep_out_of_walls();
-    state_.cells.sort(state_.particles.position, order_);
-    state_.particles.reorder(order_);
-  });
+  auto neighbours =
+      make_stage<const StepClock>("neighbours", [this](const StepClock&) { sort_by_cell(); });
   after_bodies.insert(after_bodies.begin() + start, std::move(neighbours));
+}
+
+template <int D>
+void ParticleFluid<D>::sort_by_cell() {
+  keep_out_of_walls();
+  state_.cells.sort(state_.particles.position, order_);
+  state_.particles.reorder(order_);
 }
 
 template <int D>
@@ -185,6 +189,7 @@ FluidSize ParticleFluid<D>::size() const {
 
 template <int D>
 FluidEnergy ParticleFluid<D>::energy() const {
+  refresh_host();
   const auto& ps = state_.particles;
   FluidEnergy e;
   for (std::size_t i = 0; i < ps.size(); ++i) {
@@ -198,6 +203,7 @@ FluidEnergy ParticleFluid<D>::energy() const {
 
 template <int D>
 void ParticleFluid<D>::archive_state(StateArchive& a) {
+  if (!a.reading()) refresh_host();
   a.section("particles");
   state_.particles.archive_state(a);
   a(state_.body_point_acceleration);

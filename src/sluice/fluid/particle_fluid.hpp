@@ -45,7 +45,10 @@ class ParticleFluid : public FluidSystem {
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override;
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override;
 
-  io::FluidFrame frame() const override { return {frame_of(state_.particles), {}}; }
+  io::FluidFrame frame() const override {
+    refresh_host();
+    return {frame_of(state_.particles), {}};
+  }
   double pressure_at(const Vec3& x) const override;
   double water_height_at(const Vec3& gauge) const override;
   double surge_front(int axis) const override;
@@ -69,9 +72,16 @@ class ParticleFluid : public FluidSystem {
   // point, zero on entry.
   virtual void body_point_forces(const std::vector<BodyKinematics>& motion,
                                  std::vector<Vec3>& force) const = 0;
+  // A model whose particles live elsewhere (on a device) copies them into the particle set
+  // here; whatever reads the particle set (output, probes, the check, checkpoints) calls it
+  // first. Nothing by default.
+  virtual void refresh_host() const {}
+  // The neighbours stage: puts back fluid found in a wall's layers, then sorts the particle
+  // set by cell.
+  virtual void sort_by_cell();
+  io::PolyFrame frame_of(const ParticleSet<D>& particles) const;
 
  private:
-  io::PolyFrame frame_of(const ParticleSet<D>& particles) const;
   // Whether a frame needs this field: those marked for output, the positions, and the body
   // points (for the `body` array).
   static bool shown(const FieldLabel& label);

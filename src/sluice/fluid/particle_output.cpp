@@ -7,6 +7,7 @@
 
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
+#include "sluice/fluid/particle_check.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 
 namespace sluice {
@@ -60,38 +61,47 @@ io::PolyFrame ParticleFluid<D>::frame_of(const ParticleSet<D>& ps) const {
 
 namespace {
 template <int D>
-const char* problem_of(const ParticleState<D>& s, std::size_t i) {
+ParticleCheck<D> checker(const ParticleState<D>& s) {
   const auto& ps = s.particles;
-  if (!ps.position[i].allFinite()) return "its position is not finite";
-  if (!ps.velocity[i].allFinite()) return "its velocity is not finite";
-  if (!std::isfinite(ps.density[i]) || !std::isfinite(ps.pressure[i])) {
-    return "its density or pressure is not finite";
+  ParticleCheck<D> c{ps.position.front().data(),
+                     ps.velocity.front().data(),
+                     ps.density.data(),
+                     ps.pressure.data(),
+                     reinterpret_cast<const std::int32_t*>(ps.kind.data()),
+                     {},
+                     {}};
+  for (int a = 0; a < D; ++a) {
+    const int a3 = D == 3 ? a : 2 * a;
+    c.escape_min[a] = s.escape_box.min[a3];
+    c.escape_max[a] = s.escape_box.max[a3];
   }
-  if (ps.is_fluid(i) && !s.escape_box.contains(to_3d<D>(ps.position[i]), D))
-    return "it left the domain";
-  return nullptr;
+  return c;
 }
 }  // namespace
 
 template <int D>
 std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const {
+  refresh_host();
+  if (state_.particles.size() == 0) return std::nullopt;
+  const ParticleCheck<D> problem_of = checker(state_);
   // The first bad particle by index, found in parallel; the same on any thread count.
   const double first = -exec::Default::max_of(state_.particles.size(), [&](std::size_t i) {
-    return problem_of(state_, i) ? -static_cast<double>(i)
-                                 : -std::numeric_limits<double>::infinity();
+    return problem_of(i) != ParticleProblem::kNone ? -static_cast<double>(i)
+                                                   : -std::numeric_limits<double>::infinity();
   });
   if (!std::isfinite(first)) return std::nullopt;
   const auto i = static_cast<std::size_t>(first);
   const Vec3 x = to_3d<D>(state_.particles.position[i]);
   return diverged_at(clock.step, clock.time) +
          fmt::format("particle {} at ({:.4g}, {:.4g}, {:.4g}): {}", i, x[0], x[1], x[2],
-                     problem_of(state_, i));
+                     particle_problem_text(problem_of(i)));
 }
 
 // What a frame shows, the model's fields marked for output included; the first time, a whole
 // copy that gives the set its fields.
 template <int D>
 void ParticleFluid<D>::remember_good(double time) {
+  refresh_host();
   if (!holds_fields_) {
     last_good_ = state_.particles;
     holds_fields_ = true;

@@ -11,6 +11,7 @@ namespace sluice {
 // zero where no fluid is within reach.
 template <int D>
 double ParticleFluid<D>::pressure_at(const Vec3& point) const {
+  refresh_host();
   const ParticleState<D>& s = state_;
   const Vec<D> x = from_3d<D>(point);
   const WendlandC2<D> kernel(radius_ / 2);
@@ -30,6 +31,7 @@ double ParticleFluid<D>::pressure_at(const Vec3& point) const {
 // kernel-summed volume fraction is at least one half (isolated drops do not count).
 template <int D>
 double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
+  refresh_host();
   const ParticleState<D>& s = state_;
   const WendlandC2<D> kernel(radius_ / 2);
   const auto& ps = s.particles;
@@ -52,6 +54,7 @@ double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
 // Largest coordinate of the fluid along the axis, to the edge of the particle (+ dx/2).
 template <int D>
 double ParticleFluid<D>::surge_front(int axis3) const {
+  refresh_host();
   const ParticleState<D>& s = state_;
   const int axis = (D == 2 && axis3 == 0) ? 0 : axis3;
   const auto& ps = s.particles;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -43,12 +44,12 @@ struct CubicSpline {
 
   // Single-precision forms without branches (zero beyond the support), for SIMD pair loops:
   // W = norm (t2^3 / 4 - t1^3) with t2 = max(0, 2 - q), t1 = max(0, 1 - q).
-  float value_branchless(float r) const {
+  SLUICE_HOST_DEVICE float value_branchless(float r) const {
     const float q = r * static_cast<float>(inverse_h);
     const float t2 = std::max(0.0f, 2.0f - q), t1 = std::max(0.0f, 1.0f - q);
     return static_cast<float>(norm) * (0.25f * t2 * t2 * t2 - t1 * t1 * t1);
   }
-  float gradient_factor_branchless(float r) const {
+  SLUICE_HOST_DEVICE float gradient_factor_branchless(float r) const {
     const float q = r * static_cast<float>(inverse_h);
     const float t2 = std::max(0.0f, 2.0f - q);
     // A select, not a branch: both sides are computed and the SIMD loop blends them.

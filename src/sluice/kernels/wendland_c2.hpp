@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -40,12 +41,12 @@ struct WendlandC2 {
   }
 
   // Single-precision forms without branches (zero beyond the support), for SIMD pair loops.
-  float value_branchless(float r) const {
+  SLUICE_HOST_DEVICE float value_branchless(float r) const {
     const float q = r * static_cast<float>(inverse_h);
     const float t = std::max(0.0f, 1.0f - 0.5f * q);
     return static_cast<float>(norm) * t * t * t * t * (2.0f * q + 1.0f);
   }
-  float gradient_factor_branchless(float r) const {
+  SLUICE_HOST_DEVICE float gradient_factor_branchless(float r) const {
     const float t = std::max(0.0f, 1.0f - 0.5f * r * static_cast<float>(inverse_h));
     return static_cast<float>(-5 * norm * inverse_h * inverse_h) * t * t * t;
   }

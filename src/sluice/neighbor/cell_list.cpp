@@ -9,11 +9,14 @@ namespace sluice {
 
 template <int D>
 CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius)
-    : lo_(lo), cell_size_(radius / kReach), inverse_cell_size_(kReach / radius) {
+    : cell_size_(radius / kReach) {
+  grid_.inverse_cell_size = kReach / radius;
   std::size_t total = 1;
   for (int a = 0; a < D; ++a) {
-    counts_[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) * inverse_cell_size_)) + 1 + 2 * kReach;
-    total *= static_cast<std::size_t>(counts_[a]);
+    grid_.lo[a] = lo[a];
+    grid_.counts[a] =
+        static_cast<int>(std::ceil((hi[a] - lo[a]) * grid_.inverse_cell_size)) + 1 + 2 * kReach;
+    total *= static_cast<std::size_t>(grid_.counts[a]);
   }
   if (total > (std::size_t{1} << 31)) {
     throw std::runtime_error("the domain holds too many neighbour cells; enlarge the spacing");
@@ -25,9 +28,8 @@ template <int D>
 void CellList<D>::sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order) {
   const std::size_t n = positions.size();
   cell_of_.resize(n);
-  exec::Default::for_each(n, [&](std::size_t i) {
-    cell_of_[i] = static_cast<std::uint32_t>(linear(cell_coords(positions[i])));
-  });
+  exec::Default::for_each(n,
+                          [&](std::size_t i) { cell_of_[i] = grid_.cell_of(positions[i].data()); });
   // Counting sort: stable, so particles keep their relative order within a cell and the
   // result does not depend on the thread count.
   std::fill(cell_start_.begin(), cell_start_.end(), 0);

@@ -12,8 +12,61 @@
 
 #include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
+
+// The cell grid as plain data (no containers), so that a loop body on the host or on the device
+// finds a particle's cell and its candidate ranges the same way. `cell_start` points to the
+// first index of each cell, cells in the grid's order, with one more entry at the end.
+template <int D>
+struct CellGridView {
+  static constexpr int kReach = 1;  // cells scanned on each side of a particle's cell
+  Real lo[D] = {};
+  Real inverse_cell_size = 0;
+  int counts[D] = {};  // including kReach padding cells on each side
+  const std::uint32_t* cell_start = nullptr;
+
+  // The cell of a position, clamped to the interior so that all scanned cells exist.
+  SLUICE_HOST_DEVICE void cell_coords(const Real* x, int* c) const {
+    for (int a = 0; a < D; ++a) {
+      const Real offset = (x[a] - lo[a]) * inverse_cell_size;
+      const Real count = counts[a];
+      const int k = (offset < 0 ? 0 : static_cast<int>(offset < count ? offset : count)) + kReach;
+      c[a] = k < counts[a] - 1 - kReach ? k : counts[a] - 1 - kReach;
+    }
+  }
+  SLUICE_HOST_DEVICE std::uint32_t linear(int x, int y, int z) const {
+    return static_cast<std::uint32_t>(x + counts[0] * (y + counts[1] * z));
+  }
+  // The index of the cell holding x (2D: y is the model's second axis, here z).
+  SLUICE_HOST_DEVICE std::uint32_t cell_of(const Real* x) const {
+    int c[D];
+    cell_coords(x, c);
+    return D == 2 ? linear(c[0], c[D - 1], 0) : linear(c[0], c[1], c[D - 1]);
+  }
+
+  // Calls fn(begin, end) for the contiguous index ranges that hold every particle within one
+  // cell of x (and some farther ones): the three cells of a row along x are one range.
+  template <class Fn>
+  SLUICE_HOST_DEVICE void for_each_candidate_range(const Real* x, Fn&& fn) const {
+    int c[D];
+    cell_coords(x, c);
+    if constexpr (D == 2) {
+      for (int dz = -kReach; dz <= kReach; ++dz) {
+        const std::uint32_t row = linear(c[0], c[1] + dz, 0);
+        fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
+      }
+    } else {
+      for (int dz = -kReach; dz <= kReach; ++dz) {
+        for (int dy = -kReach; dy <= kReach; ++dy) {
+          const std::uint32_t row = linear(c[0], c[1] + dy, c[2] + dz);
+          fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
+        }
+      }
+    }
+  }
+};
 
 template <int D>
 class CellList {
@@ -28,6 +81,13 @@ class CellList {
   void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order);
 
   Real radius() const { return kReach * cell_size_; }
+  std::size_t cell_count() const { return cell_start_.size() - 1; }
+  // The grid with the cells of the last sort.
+  CellGridView<D> view() const {
+    CellGridView<D> v = grid_;
+    v.cell_start = cell_start_.data();
+    return v;
+  }
 
   // Checkpoints: the cells of the last sort (the particles have moved since).
   void archive_state(StateArchive& a) { a(cell_start_); }
@@ -57,32 +117,7 @@ class CellList {
   // branch-free SIMD loops over kernels that vanish beyond their support.
   template <class Fn>
   void for_each_candidate_range(const Vec<D>& x, Fn&& fn) const {
-    const auto c = cell_coords(x);
-    if constexpr (D == 2) {
-      for (int dz = -kReach; dz <= kReach; ++dz) {
-        const std::size_t row = linear(c[0], c[1] + dz);
-        fn(cell_start_[row - kReach], cell_start_[row + kReach + 1]);
-      }
-    } else {
-      for (int dz = -kReach; dz <= kReach; ++dz) {
-        for (int dy = -kReach; dy <= kReach; ++dy) {
-          const std::size_t row = linear(c[0], c[1] + dy, c[2] + dz);
-          fn(cell_start_[row - kReach], cell_start_[row + kReach + 1]);
-        }
-      }
-    }
-  }
-
-  // The cell of a position, clamped to the interior so that all scanned cells exist.
-  std::array<int, D> cell_coords(const Vec<D>& x) const {
-    std::array<int, D> c{};
-    for (int a = 0; a < D; ++a) {
-      const Real offset = (x[a] - lo_[a]) * inverse_cell_size_;
-      const int k =
-          (offset < 0 ? 0 : static_cast<int>(std::min<Real>(offset, counts_[a]))) + kReach;
-      c[a] = std::min(k, counts_[a] - 1 - kReach);
-    }
-    return c;
+    view().for_each_candidate_range(x.data(), fn);
   }
 
  private:
@@ -96,23 +131,9 @@ class CellList {
     }
   }
 
-  std::size_t linear(int x, int z) const { return static_cast<std::size_t>(x + counts_[0] * z); }
-  std::size_t linear(int x, int y, int z) const {
-    return static_cast<std::size_t>(x + counts_[0] * (y + counts_[1] * z));
-  }
-  std::size_t linear(const std::array<int, D>& c) const {
-    if constexpr (D == 2) {
-      return linear(c[0], c[1]);
-    } else {
-      return linear(c[0], c[1], c[2]);
-    }
-  }
-
-  Vec<D> lo_ = Vec<D>::Zero();
+  static constexpr int kReach = CellGridView<D>::kReach;
+  CellGridView<D> grid_;  // without its cell_start, which view() fills in
   Real cell_size_ = 0;
-  Real inverse_cell_size_ = 0;
-  static constexpr int kReach = 1;  // cells scanned on each side of a particle's cell
-  std::array<int, D> counts_{};     // including kReach padding cells on each side
   std::vector<std::uint32_t>
       cell_start_;                      // particles of cell c: [cell_start_[c], cell_start_[c+1])
   std::vector<std::uint32_t> cell_of_;  // scratch: cell of each particle before sorting

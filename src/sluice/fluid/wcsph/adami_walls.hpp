@@ -2,33 +2,38 @@
 // of the fluid around it, with the hydrostatic correction for the wall's own acceleration, the
 // density of that pressure by the equation of state, and, for no-slip, a viscous velocity that
 // mirrors the fluid's Shepard-averaged velocity about the wall's own. The fluid then sees walls
-// through its ordinary momentum equation, with no gap at the wall.
+// through its ordinary momentum equation, with no gap at the wall. The loop body serves the
+// host and the device (wcsph_loop_bodies.hpp).
 #pragma once
 
-#include <array>
 #include <cmath>
-#include <vector>
+#include <cstdint>
 
-#include "sluice/exec/policy.hpp"
-#include "sluice/fluid/particle_state.hpp"
+#include "sluice/exec/host_device.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
-#include "sluice/fluid/wcsph/tait.hpp"
+#include "sluice/fluid/wcsph/wcsph_fields.hpp"
+#include "sluice/neighbor/cell_list.hpp"
 
 namespace sluice {
 
+// Kernel-weighted sums over the fluid particles in [begin, end) around wall particle w.
 struct AdamiWallSums {
   double weight = 0, pressure = 0;
-  std::array<double, 3> rho_r{}, velocity{};
+  double rho_r[3] = {0, 0, 0}, velocity[3] = {0, 0, 0};
 };
 
-// Kernel-weighted sums over the fluid particles in [begin, end) around wall particle w, as SIMD.
+// `p` by value, as a local copy: the SIMD sums split as they always have (the same results to
+// the bit).
 template <class Kernel>
-void add_adami_wall_sums(const PackedParticles& packed, const Kernel& kernel, std::size_t w,
-                         std::uint32_t begin, std::uint32_t end, AdamiWallSums& out) {
-  const auto p = packed.view();
+SLUICE_HOST_DEVICE inline void add_adami_wall_sums(const PackedParticles::View p,
+                                                   const Kernel& kernel, std::size_t w,
+                                                   std::uint32_t begin, std::uint32_t end,
+                                                   AdamiWallSums& out) {
   const float xw = p.x[w], yw = p.y[w], zw = p.z[w];
   float sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0;
+#if !defined(__CUDACC__)
 #pragma omp simd reduction(+ : sw, sp, srx, sry, srz, svx, svy, svz)
+#endif
   for (std::size_t f = begin; f < end; ++f) {
     const float rx = xw - p.x[f], ry = yw - p.y[f], rz = zw - p.z[f];
     const float weight =
@@ -53,36 +58,40 @@ void add_adami_wall_sums(const PackedParticles& packed, const Kernel& kernel, st
   out.velocity[2] += svz;
 }
 
-// Sets every wall and body particle's pressure, density and viscous velocity (`wall_velocity`)
-// from the packed fluid around it.
+// A wall or body particle takes the pressure of the fluid around it, corrected for its own
+// acceleration (a body's wall feels g - a_wall), the density of that pressure, and for the
+// viscous terms the fluid's Shepard-averaged velocity mirrored about its own (Adami et al.).
 template <int D, class Kernel>
-void update_adami_walls(ParticleState<D>& s, const PackedParticles& packed, const Kernel& kernel,
-                        const TaitEquation& eos, std::vector<Vec<D>>& wall_velocity) {
-  auto& ps = s.particles;
-  const Vec3 g = to_3d<D>(s.gravity);
-  exec::Default::for_each_balanced(ps.size(), [&](std::size_t w) {
-    if (ps.is_fluid(w)) return;
+struct AdamiWall {
+  WcsphNeighbourhood<D, Kernel> n;
+  SLUICE_HOST_DEVICE void operator()(std::size_t w) const {
+    const auto& [f, packed, cells, c] = n;
+    if (f.fluid(w)) return;
     AdamiWallSums sums;
-    s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
-      if (packed.has_fluid(begin, end)) add_adami_wall_sums(packed, kernel, w, begin, end, sums);
+    cells.for_each_candidate_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
+      if (packed.has_fluid(begin, end)) add_adami_wall_sums(packed, c.kernel, w, begin, end, sums);
     });
     if (sums.weight > 0) {
-      // A body's wall feels g - a_wall; a fixed wall does not accelerate.
-      Vec3 g_wall = g;
-      if (ps.body_point[w] >= 0) g_wall -= s.body_point_acceleration[ps.body_point[w]];
+      Real g_wall[3] = {c.gravity[0], c.gravity[1], c.gravity[2]};
+      if (f.body_point[w] >= 0) {
+        const Real* a = f.body_point_acceleration + 3 * f.body_point[w];
+        for (int k = 0; k < 3; ++k) g_wall[k] -= a[k];
+      }
       const Real hydrostatic =
           g_wall[0] * sums.rho_r[0] + g_wall[1] * sums.rho_r[1] + g_wall[2] * sums.rho_r[2];
       const Real p = (sums.pressure + hydrostatic) / sums.weight;
-      ps.pressure[w] = p;
-      ps.density[w] = eos.density(p);
-      const Vec3 mean(sums.velocity[0], sums.velocity[1], sums.velocity[2]);
-      wall_velocity[w] = 2 * ps.velocity[w] - from_3d<D>(mean / sums.weight);
+      f.pressure[w] = p;
+      f.density[w] = c.eos.density(p);
+      for (int a = 0; a < D; ++a) {
+        const Real mean = sums.velocity[D == 3 ? a : 2 * a] / sums.weight;
+        f.wall_velocity[D * w + a] = 2 * f.velocity[D * w + a] - mean;
+      }
     } else {
-      ps.pressure[w] = 0;
-      ps.density[w] = eos.rho0;
-      wall_velocity[w] = ps.velocity[w];
+      f.pressure[w] = 0;
+      f.density[w] = c.eos.rho0;
+      for (int a = 0; a < D; ++a) f.wall_velocity[D * w + a] = f.velocity[D * w + a];
     }
-  });
-}
+  }
+};
 
 }  // namespace sluice

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -30,24 +31,50 @@ struct PackedParticles {
   struct View {
     const float *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz;
     const float *density, *pressure, *pressure_term, *volume, *fluid, *viscous_weight;
+    const std::uint32_t* fluid_before;
+    SLUICE_HOST_DEVICE bool has_fluid(std::uint32_t begin, std::uint32_t end) const {
+      return fluid_before[end] != fluid_before[begin];
+    }
   };
-  View view() const {
-    return {position[0].data(),
-            position[1].data(),
-            position[2].data(),
-            velocity[0].data(),
-            velocity[1].data(),
-            velocity[2].data(),
-            viscous_velocity[0].data(),
-            viscous_velocity[1].data(),
-            viscous_velocity[2].data(),
+  // The same arrays to write, wherever they live (the host's vectors here; a device's copy).
+  struct Arrays {
+    float* position[3];
+    float* velocity[3];
+    float* viscous_velocity[3];
+    float *density, *pressure, *pressure_term, *volume, *fluid, *viscous_weight;
+    std::uint32_t* fluid_before;
+    View view() const {
+      return {position[0],
+              position[1],
+              position[2],
+              velocity[0],
+              velocity[1],
+              velocity[2],
+              viscous_velocity[0],
+              viscous_velocity[1],
+              viscous_velocity[2],
+              density,
+              pressure,
+              pressure_term,
+              volume,
+              fluid,
+              viscous_weight,
+              fluid_before};
+    }
+  };
+  Arrays arrays() {
+    return {{position[0].data(), position[1].data(), position[2].data()},
+            {velocity[0].data(), velocity[1].data(), velocity[2].data()},
+            {viscous_velocity[0].data(), viscous_velocity[1].data(), viscous_velocity[2].data()},
             density.data(),
             pressure.data(),
             pressure_term.data(),
             volume.data(),
             fluid.data(),
-            viscous_weight.data()};
+            viscous_weight.data(),
+            fluid_before.data()};
   }
+  View view() const { return const_cast<PackedParticles*>(this)->arrays().view(); }
 
   bool has_fluid(std::uint32_t begin, std::uint32_t end) const {
     return fluid_before[end] != fluid_before[begin];

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -16,7 +17,7 @@ struct TaitEquation {
         gamma(gamma),
         stiffness(sound_speed * sound_speed * rest_density / gamma) {}
 
-  Real pressure(Real rho) const {
+  SLUICE_HOST_DEVICE Real pressure(Real rho) const {
     const Real ratio = rho / rho0;
     if (gamma == 7) {
       const Real r2 = ratio * ratio;
@@ -27,8 +28,9 @@ struct TaitEquation {
 
   // Inverse. No density reaches a pressure of -B or below: there 1 + p/B is clamped to 1e-6
   // (rho0 1e-6^(1/gamma): 139 kg/m^3 for gamma = 7), so the density stays finite and positive.
-  Real density(Real p) const {
-    return rho0 * std::pow(std::max(1 + p / stiffness, Real(1e-6)), 1 / gamma);
+  SLUICE_HOST_DEVICE Real density(Real p) const {
+    const Real base = 1 + p / stiffness;
+    return rho0 * std::pow(base > Real(1e-6) ? base : Real(1e-6), 1 / gamma);
   }
 
   Real rho0, c0, gamma, stiffness;

@@ -5,29 +5,24 @@
 #include <string>
 #include <vector>
 
+#include "sluice/exec/policy.hpp"
 #include "sluice/fluid/boundary_registry.hpp"
-#include "sluice/fluid/particle_state.hpp"
 #include "sluice/fluid/wcsph/adami_walls.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
-#include "sluice/fluid/wcsph/tait.hpp"
+#include "sluice/fluid/wcsph/wcsph_fields.hpp"
 
 namespace sluice {
 
-// What a WCSPH boundary treatment reads and sets.
+// What a WCSPH boundary treatment reads and sets (the boundaries' pressure, density and
+// wall_velocity).
 template <int D, class Kernel>
-struct WcsphBoundaryContext {
-  ParticleState<D>& state;
-  const PackedParticles& packed;  // the fluid, packed for the pair loops
-  const Kernel& kernel;
-  const TaitEquation& eos;
-  std::vector<Vec<D>>& wall_velocity;  // the velocity the viscous terms see at each boundary
-};
+using WcsphBoundaryContext = WcsphNeighbourhood<D, Kernel>;
 
 template <int D, class Kernel>
 class AdamiWallTreatment final : public BoundaryTreatment<WcsphBoundaryContext<D, Kernel>> {
  public:
   void update(WcsphBoundaryContext<D, Kernel>& c) override {
-    update_adami_walls(c.state, c.packed, c.kernel, c.eos, c.wall_velocity);
+    exec::Default::for_each_balanced(c.f.size, AdamiWall<D, Kernel>{c});
   }
 };
 

@@ -2,25 +2,32 @@
 // density diffusion, Tait equation of state, artificial and laminar viscosity, kick-drift-kick
 // leapfrog. Walls are boundary particles whose pressure, density and velocity are
 // extrapolated from the fluid (Adami, Hu & Adams 2012), so the fluid sees them through the
-// ordinary momentum equation, with no gap at the wall.
+// ordinary momentum equation, with no gap at the wall. The step's loop bodies
+// (wcsph_loop_bodies.hpp) run on the host's particle set with the OpenMP policy, or, with
+// `model.device`, on a device's copy of it (wcsph_device_run.hpp).
 #pragma once
 
 #include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
 #include "sluice/fluid/wcsph/wcsph_boundaries.hpp"
-#include "sluice/fluid/wcsph/wcsph_pair_term.hpp"
+#include "sluice/fluid/wcsph/wcsph_device_run.hpp"
+#include "sluice/fluid/wcsph/wcsph_loop_bodies.hpp"
 #include "sluice/fluid/wcsph/wcsph_parameters.hpp"
 
 namespace sluice {
 
 template <int D, class Kernel>
 class WcsphModel final : public ParticleFluid<D> {
+  using Base = ParticleFluid<D>;
+
  public:
   WcsphModel(const WcsphParameters& parameters, const io::CaseConfig& config,
              const BodyGeometry& bodies)
@@ -32,11 +39,16 @@ class WcsphModel final : public ParticleFluid<D> {
         boundary_(wcsph_boundaries<D, Kernel>().make(parameters.boundary)) {}
 
   std::string describe() const override {
-    return fmt::format(
+    std::string out = fmt::format(
         "wcsph: kernel {}, h = {:.4g} m ({} dx), c0 = {:.4g} m/s, alpha = {}, delta = {}, "
         "walls {}",
         Kernel::kName, kernel_.h, p_.h_over_dx, eos_.c0, p_.artificial_viscosity,
         p_.density_diffusion, p_.no_slip ? "no-slip" : "free-slip");
+    if (device_) {
+      out += fmt::format(", on {} ({:.0f} bytes per particle there)", device_->name(),
+                         device_->bytes_per_particle());
+    }
+    return out;
   }
 
   void initialize() override {
@@ -55,22 +67,78 @@ class WcsphModel final : public ParticleFluid<D> {
     update_walls(s);
     compute_rates(s);
     measure_extremes(s);
+    if (p_.device != WcsphDevice::kCpu) start_device();
   }
 
   void archive_model(StateArchive& a) override { a(max_speed_, max_acceleration_); }
 
+  void archive_state(StateArchive& a) override {
+    Base::archive_state(a);
+    if (device_ && a.reading()) {
+      device_->upload(fields(this->state()));
+      host_current_ = true;
+    }
+  }
+
   void model_stages(StageList& before, StageList& after) override {
-    before.push_back(make_stage<const StepClock>(
-        "kick_drift", [this](const StepClock& c) { kick_drift(this->state(), c.dt); }));
-    after.push_back(make_stage<const StepClock>(
-        "wall_state", [this](const StepClock&) { update_walls(this->state()); }));
-    after.push_back(make_stage<const StepClock>(
-        "forces", [this](const StepClock&) { compute_rates(this->state()); }));
+    before.push_back(make_stage<const StepClock>("kick_drift", [this](const StepClock& c) {
+      if (device_) return on_device([&] { device_->kick_drift(c.dt); });
+      kick_drift(this->state(), c.dt);
+    }));
+    after.push_back(make_stage<const StepClock>("wall_state", [this](const StepClock&) {
+      if (device_) return on_device([&] { device_->update_walls(); });
+      update_walls(this->state());
+    }));
+    after.push_back(make_stage<const StepClock>("forces", [this](const StepClock&) {
+      if (device_) return on_device([&] { device_->compute_rates(); });
+      compute_rates(this->state());
+    }));
     after.push_back(make_stage<const StepClock>("kick", [this](const StepClock& c) {
+      if (device_) {
+        return on_device([&] {
+          device_->kick(c.dt);
+          const auto e = device_->extremes();
+          max_speed_ = e.max_speed;
+          max_acceleration_ = e.max_acceleration;
+        });
+      }
       kick(this->state(), c.dt);
       measure_extremes(this->state());
     }));
   }
+
+  void receive_body_motion(const std::vector<BodyKinematics>& motion) override {
+    Base::receive_body_motion(motion);
+    if (!device_) return;
+    const BodyPoints& points = this->body_points();
+    std::vector<Vec3> position(points.size()), velocity(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      position[k] = points.position(k, motion);
+      velocity[k] = points.velocity(k, motion);
+    }
+    on_device([&] {
+      device_->set_body_motion(position, velocity, this->state().body_point_acceleration);
+    });
+  }
+
+  std::optional<std::string> check(const StepClock& clock) const override {
+    // The device finds whether a particle went wrong; the host's copy names it.
+    if (device_ && !device_->check()) return std::nullopt;
+    return Base::check(clock);
+  }
+
+  void remember_good(double time) override {
+    if (!device_) return Base::remember_good(time);
+    device_->remember();
+    good_time_ = time;
+  }
+  io::FluidFrame last_good_frame() const override {
+    if (!device_) return Base::last_good_frame();
+    ParticleSet<D> good = this->state().particles;
+    device_->download_remembered(fields(good));
+    return {this->frame_of(good), {}};
+  }
+  double last_good_time() const override { return device_ ? good_time_ : Base::last_good_time(); }
 
   // The model's own fields, for tests that check the pair loops against a reference.
   FieldHandle<Vec<D>> acceleration_field() const { return acceleration_; }
@@ -89,38 +157,103 @@ class WcsphModel final : public ParticleFluid<D> {
     return step;
   }
 
+ protected:
+  void sort_by_cell() override {
+    if (device_) return on_device([&] { device_->sort_by_cell(); });
+    Base::sort_by_cell();
+  }
+
+  // The device's particles into the host's set, sorted by cell as the device left them.
+  void refresh_host() const override {
+    if (!device_ || host_current_) return;
+    auto& s = const_cast<ParticleState<D>&>(this->state());
+    device_->download(fields(s));
+    std::vector<std::uint32_t> order;
+    s.cells.sort(s.particles.position, order);
+    s.particles.reorder(order);
+    host_current_ = true;
+  }
+
+  // The fluid's force on each body particle w: minus the force that w exerts on its fluid
+  // neighbours i, from the very pair term that gives the fluid's acceleration (in double).
+  void body_point_forces(const std::vector<BodyKinematics>&,
+                         std::vector<Vec3>& force) const override {
+    if (device_) return device_->body_point_forces(force);
+    const ParticleState<D>& s = this->state();
+    exec::Default::for_each(s.particles.size(),
+                            WcsphBodyPointForce<D, Kernel>{
+                                neighbourhood(s), force.empty() ? nullptr : force.front().data()});
+  }
+
  private:
+  // The device's run, from the host's particles as initialize() left them.
+  void start_device() {
+    const ParticleState<D>& s = this->state();
+    WcsphDeviceSetup<D, Kernel> setup{constants(s), s.cells.view(), s.cells.cell_count(),
+                                      this->body_points().size()};
+    setup.cells.cell_start = nullptr;
+    for (int a = 0; a < D; ++a) {
+      const int a3 = D == 3 ? a : 2 * a;
+      setup.escape_min[a] = s.escape_box.min[a3];
+      setup.escape_max[a] = s.escape_box.max[a3];
+    }
+    device_ = make_wcsph_device_run<D, Kernel>(p_.device, setup);
+    device_->upload(fields(s));
+    host_current_ = false;
+  }
+  template <class Work>
+  void on_device(Work&& work) {
+    work();
+    host_current_ = false;
+  }
+
+  // The host's particle set as the loop bodies see it.
+  WcsphFields<D> fields(const ParticleState<D>& s) const { return fields(s.particles, &s); }
+  WcsphFields<D> fields(const ParticleSet<D>& particles,
+                        const ParticleState<D>* s = nullptr) const {
+    static_assert(sizeof(Vec<D>) == D * sizeof(Real), "a vector is D reals in a row");
+    auto& ps = const_cast<ParticleSet<D>&>(particles);
+    auto reals = [](auto& v) { return v.empty() ? nullptr : v.front().data(); };
+    WcsphFields<D> f;
+    f.size = ps.size();
+    f.position = reals(ps.position);
+    f.velocity = reals(ps.velocity);
+    f.density = ps.density.data();
+    f.pressure = ps.pressure.data();
+    f.mass = ps.mass.data();
+    f.kind = reinterpret_cast<const std::int32_t*>(ps.kind.data());
+    f.body_point = ps.body_point.data();
+    f.acceleration = reals(ps[acceleration_]);
+    f.density_rate = ps[density_rate_].data();
+    f.half_velocity = reals(ps[half_velocity_]);
+    f.half_density = ps[half_density_].data();
+    f.wall_velocity = reals(ps[wall_velocity_]);
+    if (s) f.body_point_acceleration = reals(s->body_point_acceleration);
+    return f;
+  }
+
+  // What the neighbour loops read, the packed copy as the last pack left it.
+  WcsphNeighbourhood<D, Kernel> neighbourhood(const ParticleState<D>& s) const {
+    return {fields(s), packed_.view(), s.cells.view(), constants(s)};
+  }
+
+  WcsphConstants<D, Kernel> constants(const ParticleState<D>& s) const {
+    WcsphConstants<D, Kernel> c{kernel_, eos_, pair_constants(s)};
+    const Vec3 g = to_3d<D>(s.gravity);
+    for (int a = 0; a < 3; ++a) c.gravity[a] = g[a];
+    c.two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
+    c.no_slip = p_.no_slip;
+    return c;
+  }
+
   // First half kick and drift; velocity and density are then predicted to the end of the
   // step for the force evaluation, which keeps one force evaluation per step.
   void kick_drift(ParticleState<D>& s, Real dt) {
-    auto& ps = s.particles;
-    auto& a = ps[acceleration_];
-    auto& drho = ps[density_rate_];
-    auto& v_half = ps[half_velocity_];
-    auto& rho_half = ps[half_density_];
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      v_half[i] = ps.velocity[i] + 0.5 * dt * a[i];
-      rho_half[i] = ps.density[i] + 0.5 * dt * drho[i];
-      ps.position[i] += dt * v_half[i];
-      ps.velocity[i] = v_half[i] + 0.5 * dt * a[i];
-      ps.density[i] = rho_half[i] + 0.5 * dt * drho[i];
-      ps.pressure[i] = eos_.pressure(ps.density[i]);
-    });
+    exec::Default::for_each(s.particles.size(), WcsphKickDrift<D>{fields(s), dt, eos_});
   }
 
   void kick(ParticleState<D>& s, Real dt) {
-    auto& ps = s.particles;
-    auto& a = ps[acceleration_];
-    auto& drho = ps[density_rate_];
-    auto& v_half = ps[half_velocity_];
-    auto& rho_half = ps[half_density_];
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      ps.velocity[i] = v_half[i] + 0.5 * dt * a[i];
-      ps.density[i] = rho_half[i] + 0.5 * dt * drho[i];
-      ps.pressure[i] = eos_.pressure(ps.density[i]);
-    });
+    exec::Default::for_each(s.particles.size(), WcsphKick<D>{fields(s), dt, eos_});
   }
 
   void measure_extremes(const ParticleState<D>& s) {
@@ -135,29 +268,9 @@ class WcsphModel final : public ParticleFluid<D> {
   // Copies what the pair loops read into the packed single-precision arrays.
   void pack(const ParticleState<D>& s, bool with_rates) {
     const auto& ps = s.particles;
-    const auto& wall_velocity = ps[wall_velocity_];
     packed_.resize(ps.size());
-    exec::Default::for_each(ps.size(), [&](std::size_t j) {
-      const bool fluid = ps.is_fluid(j);
-      // 2D models live in the x-z plane: packed as (x, 0, z), like every 3D view of them.
-      const Vec3 x = to_3d<D>(ps.position[j]);
-      const Vec3 v = to_3d<D>(ps.velocity[j]);
-      const Vec3 u = fluid ? v : to_3d<D>(wall_velocity[j]);
-      for (int a = 0; a < 3; ++a) {
-        packed_.position[a][j] = static_cast<float>(x[a]);
-        packed_.velocity[a][j] = static_cast<float>(v[a]);
-        packed_.viscous_velocity[a][j] = static_cast<float>(u[a]);
-      }
-      packed_.density[j] = static_cast<float>(ps.density[j]);
-      packed_.pressure[j] = static_cast<float>(ps.pressure[j]);
-      packed_.fluid[j] = fluid ? 1.0f : 0.0f;
-      packed_.viscous_weight[j] = (fluid || p_.no_slip) ? 1.0f : 0.0f;
-      if (with_rates) {
-        const Real inverse_rho = 1 / ps.density[j];
-        packed_.pressure_term[j] = static_cast<float>(ps.pressure[j] * inverse_rho * inverse_rho);
-        packed_.volume[j] = static_cast<float>(ps.mass[j] * inverse_rho);
-      }
-    });
+    exec::Default::for_each(ps.size(),
+                            WcsphPack<D>{fields(s), packed_.arrays(), p_.no_slip, with_rates});
     packed_.fluid_before[0] = 0;
     for (std::size_t j = 0; j < ps.size(); ++j) {
       packed_.fluid_before[j + 1] = packed_.fluid_before[j] + (ps.is_fluid(j) ? 1 : 0);
@@ -168,56 +281,15 @@ class WcsphModel final : public ParticleFluid<D> {
   // boundary treatment sets them.
   void update_walls(ParticleState<D>& s) {
     pack(s, false);
-    WcsphBoundaryContext<D, Kernel> context{s, packed_, kernel_, eos_, s.particles[wall_velocity_]};
+    WcsphBoundaryContext<D, Kernel> context = neighbourhood(s);
     boundary_->update(context);
-  }
-
-  // The fluid's force on each body particle w: minus the force that w exerts on its fluid
-  // neighbours i, from the very pair term that gives the fluid's acceleration (in double).
-  void body_point_forces(const std::vector<BodyKinematics>&,
-                         std::vector<Vec3>& force) const override {
-    const ParticleState<D>& s = this->state();
-    const auto& ps = s.particles;
-    const auto p = packed_.view();
-    const WcsphPairConstants k = pair_constants(s);
-    const Real two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
-    exec::Default::for_each(ps.size(), [&](std::size_t w) {
-      if (ps.body_point[w] < 0) return;
-      Vec3 f = Vec3::Zero();
-      s.cells.for_each_candidate_range(ps.position[w], [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-          if (p.fluid[i] == 0) continue;
-          const auto own = own_particle(p, i, two_nu_rho0 / ps.density[i]);
-          double ax = 0, ay = 0, az = 0, drho = 0;
-          add_wcsph_pair_term(p, own, w, k, kernel_, ax, ay, az, drho);
-          f -= ps.mass[i] * Vec3(ax, ay, az);  // minus m_i a_i(w)
-        }
-      });
-      force[ps.body_point[w]] = f;
-    });
   }
 
   // Continuity with density diffusion and the momentum equation, gathered per fluid particle
   // (each pair evaluated from both sides, so no two threads write the same particle).
   void compute_rates(ParticleState<D>& s) {
     pack(s, true);
-    auto& ps = s.particles;
-    auto& acceleration = ps[acceleration_];
-    auto& density_rate = ps[density_rate_];
-    const WcsphPairConstants k = pair_constants(s);
-    const Vec3 g = to_3d<D>(s.gravity);
-    const Real two_nu_rho0 = 2 * s.kinematic_viscosity * eos_.rho0;
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      const float laminar_i = static_cast<float>(two_nu_rho0 / ps.density[i]);
-      Rates rates;
-      s.cells.for_each_candidate_range(ps.position[i], [&](std::uint32_t begin, std::uint32_t end) {
-        add_rates(i, begin, end, k, laminar_i, rates);
-      });
-      const Vec3 acc(rates.acceleration[0], rates.acceleration[1], rates.acceleration[2]);
-      acceleration[i] = from_3d<D>(acc + g);
-      density_rate[i] = rates.density;
-    });
+    exec::Default::for_each_balanced(s.particles.size(), WcsphRates<D, Kernel>{neighbourhood(s)});
   }
 
   WcsphPairConstants pair_constants(const ParticleState<D>& s) const {
@@ -235,26 +307,6 @@ class WcsphModel final : public ParticleFluid<D> {
     return k;
   }
 
-  struct Rates {
-    std::array<double, 3> acceleration{};
-    double density = 0;
-  };
-
-  // The pair terms of fluid particle i with the candidates [begin, end), as SIMD.
-  void add_rates(std::size_t i, std::uint32_t begin, std::uint32_t end, const WcsphPairConstants& k,
-                 float laminar_i, Rates& out) const {
-    const auto p = packed_.view();
-    const WcsphOwnParticle<float> own = own_particle(p, i, laminar_i);
-    float ax = 0, ay = 0, az = 0, drho = 0;
-#pragma omp simd reduction(+ : ax, ay, az, drho)
-    for (std::size_t j = begin; j < end; ++j)
-      add_wcsph_pair_term(p, own, j, k, kernel_, ax, ay, az, drho);
-    out.acceleration[0] += ax;
-    out.acceleration[1] += ay;
-    out.acceleration[2] += az;
-    out.density += drho;
-  }
-
   WcsphParameters p_;
   Kernel kernel_;
   TaitEquation eos_;
@@ -264,6 +316,11 @@ class WcsphModel final : public ParticleFluid<D> {
   PackedParticles packed_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
+  // With model.device: the run there, whether the host's set holds its latest state, and the
+  // time of the last good state it keeps.
+  std::unique_ptr<WcsphDeviceRun<D>> device_;
+  mutable bool host_current_ = true;
+  double good_time_ = 0;
 };
 
 }  // namespace sluice

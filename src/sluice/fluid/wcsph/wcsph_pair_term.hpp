@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 
+#include "sluice/exec/host_device.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 
 namespace sluice {
@@ -27,7 +28,8 @@ struct WcsphOwnParticle {
 };
 
 template <class T>
-WcsphOwnParticle<T> own_particle(const PackedParticles::View& p, std::size_t i, T laminar) {
+SLUICE_HOST_DEVICE WcsphOwnParticle<T> own_particle(const PackedParticles::View& p, std::size_t i,
+                                                    T laminar) {
   return {p.x[i], p.y[i], p.z[i], p.vx[i], p.vy[i], p.vz[i], p.density[i], p.pressure_term[i],
           laminar};
 }
@@ -38,9 +40,11 @@ WcsphOwnParticle<T> own_particle(const PackedParticles::View& p, std::size_t i, 
 // the fluid's loops; the force on a body particle, a sum over many fluid particles that moves
 // a body, is evaluated in double from the same inputs.
 template <class T, class Kernel>
-inline void add_wcsph_pair_term(const PackedParticles::View& p, const WcsphOwnParticle<T>& i,
-                                std::size_t j, const WcsphPairConstants& k, const Kernel& kernel,
-                                T& ax, T& ay, T& az, T& drho) {
+SLUICE_HOST_DEVICE inline void add_wcsph_pair_term(const PackedParticles::View& p,
+                                                   const WcsphOwnParticle<T>& i, std::size_t j,
+                                                   const WcsphPairConstants& k,
+                                                   const Kernel& kernel, T& ax, T& ay, T& az,
+                                                   T& drho) {
   const T rx = i.x - p.x[j], ry = i.y - p.y[j], rz = i.z - p.z[j];
   const T r2 = rx * rx + ry * ry + rz * rz;
   const T v_dot_r = (i.vx - p.vx[j]) * rx + (i.vy - p.vy[j]) * ry + (i.vz - p.vz[j]) * rz;

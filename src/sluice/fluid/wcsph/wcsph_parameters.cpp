@@ -42,6 +42,16 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
   p.no_slip = slip == "no_slip";
   p.boundary = model.optional_choice("boundary", p.boundary, "boundary treatment",
                                      wcsph_boundaries<3, WendlandC2<3>>().names());
+  const std::string device =
+      model.optional_choice("device", "cpu", "device", {"cpu", "gpu", "emulated"});
+  p.device = device == "gpu"        ? WcsphDevice::kGpu
+             : device == "emulated" ? WcsphDevice::kEmulated
+                                    : WcsphDevice::kCpu;
+  std::string why;
+  if (!wcsph_device_available(p.device, why)) model.fail("device", "cannot run on the GPU: " + why);
+  if (p.device != WcsphDevice::kCpu && p.boundary != "adami") {
+    model.fail("device", "the device runs the adami boundary treatment only");
+  }
   model.finish();
 
   if (p.sound_speed == 0) {

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice {
@@ -12,17 +13,18 @@ enum class KernelChoice { kWendlandC2, kCubicSpline };
 
 struct WcsphParameters {
   KernelChoice kernel = KernelChoice::kWendlandC2;
-  double h_over_dx = 0;                // h = h_over_dx * spacing; 0 = the kernel's default
-  double sound_speed = 0;              // c0; 0 = speed_factor * max_speed
-  double speed_factor = 10;            // c0 = speed_factor * max_speed
-  double max_speed = 0;                // expected largest speed; 0 = sqrt(2 g H) of the fluid
-  double gamma = 7;                    // Tait exponent
-  double artificial_viscosity = 0.02;  // Monaghan's alpha
-  double density_diffusion = 0.1;      // delta of the density-diffusion term
-  double cfl = 0.2;                    // acoustic Courant number
-  double force_cfl = 0.25;             // coefficient of sqrt(h / |a|max)
-  bool no_slip = true;                 // walls: no-slip (true) or free-slip
-  std::string boundary = "adami";      // the boundary treatment, by name (wcsph_boundaries)
+  double h_over_dx = 0;                    // h = h_over_dx * spacing; 0 = the kernel's default
+  double sound_speed = 0;                  // c0; 0 = speed_factor * max_speed
+  double speed_factor = 10;                // c0 = speed_factor * max_speed
+  double max_speed = 0;                    // expected largest speed; 0 = sqrt(2 g H) of the fluid
+  double gamma = 7;                        // Tait exponent
+  double artificial_viscosity = 0.02;      // Monaghan's alpha
+  double density_diffusion = 0.1;          // delta of the density-diffusion term
+  double cfl = 0.2;                        // acoustic Courant number
+  double force_cfl = 0.25;                 // coefficient of sqrt(h / |a|max)
+  bool no_slip = true;                     // walls: no-slip (true) or free-slip
+  std::string boundary = "adami";          // the boundary treatment, by name (wcsph_boundaries)
+  WcsphDevice device = WcsphDevice::kCpu;  // where the particles live and the loops run
 
   double smoothing_length(double dx) const { return h_over_dx * dx; }
 };

@@ -1,0 +1,156 @@
+// The CUDA execution policy as a device backend (wcsph_device_run_impl.hpp describes what a
+// backend offers): arrays in device memory, a loop body run by one thread per index, and the
+// sort, scan and reduction of CUB (which ships with the CUDA toolkit). Compiled by nvcc only.
+#pragma once
+
+#include <cuda_runtime.h>
+
+#include <cstdint>
+#include <cub/cub.cuh>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace sluice::exec {
+
+inline void cuda_check(cudaError_t status, const char* what) {
+  if (status != cudaSuccess) {
+    throw std::runtime_error(std::string("CUDA: ") + what + ": " + cudaGetErrorString(status));
+  }
+}
+
+template <class Body>
+__global__ void run_each(std::size_t n, Body body) {
+  const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (i < n) body(i);
+}
+
+template <class Value>
+__global__ void evaluate_each(std::size_t n, Value value, double* out) {
+  const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (i < n) out[i] = value(i);
+}
+
+struct CudaBackend {
+  static constexpr int kBlock = 256;
+
+  static std::string name() {
+    int device = 0;
+    cuda_check(cudaGetDevice(&device), "cudaGetDevice");
+    cudaDeviceProp properties{};
+    cuda_check(cudaGetDeviceProperties(&properties, device), "cudaGetDeviceProperties");
+    return std::string(properties.name) + " (CUDA)";
+  }
+
+  // n values of T in device memory; copies to and from the host are synchronous.
+  template <class T>
+  class Array {
+   public:
+    Array() = default;
+    Array(const Array&) = delete;
+    Array& operator=(const Array&) = delete;
+    ~Array() { cudaFree(data_); }  // nothing to report from a destructor
+
+    T* data() { return data_; }
+    const T* data() const { return data_; }
+    std::size_t size() const { return size_; }
+    void resize(std::size_t n) {
+      if (n == size_) return;
+      cudaFree(data_);
+      data_ = nullptr;
+      size_ = n;
+      if (n > 0) cuda_check(cudaMalloc(&data_, n * sizeof(T)), "cudaMalloc");
+    }
+    void swap(Array& other) {
+      std::swap(data_, other.data_);
+      std::swap(size_, other.size_);
+    }
+    void from_host(const T* p, std::size_t n, std::size_t offset = 0) {
+      if (n == 0) return;
+      cuda_check(cudaMemcpy(data_ + offset, p, n * sizeof(T), cudaMemcpyHostToDevice),
+                 "copy to the device");
+    }
+    void to_host(T* p, std::size_t n, std::size_t offset = 0) const {
+      if (n == 0) return;
+      cuda_check(cudaMemcpy(p, data_ + offset, n * sizeof(T), cudaMemcpyDeviceToHost),
+                 "copy from the device");
+    }
+    void copy_from(const Array& other) {
+      resize(other.size_);
+      if (size_ == 0) return;
+      cuda_check(cudaMemcpy(data_, other.data_, size_ * sizeof(T), cudaMemcpyDeviceToDevice),
+                 "copy on the device");
+    }
+
+   private:
+    T* data_ = nullptr;
+    std::size_t size_ = 0;
+  };
+
+  template <class Body>
+  static void for_each(std::size_t n, const Body& body) {
+    if (n == 0) return;
+    run_each<<<blocks(n), kBlock>>>(n, body);
+    cuda_check(cudaGetLastError(), "a loop's launch");
+  }
+
+  template <class Value>
+  static double max_of(std::size_t n, const Value& value, Array<double>& scratch) {
+    if (n == 0) return -std::numeric_limits<double>::infinity();
+    if (scratch.size() < n + 1) scratch.resize(n + 1);
+    evaluate_each<<<blocks(n), kBlock>>>(n, value, scratch.data());
+    cuda_check(cudaGetLastError(), "a reduction's launch");
+    std::size_t bytes = 0;
+    cuda_check(cub::DeviceReduce::Max(nullptr, bytes, scratch.data(), scratch.data() + n,
+                                      static_cast<int>(n)),
+               "cub::DeviceReduce::Max");
+    cuda_check(cub::DeviceReduce::Max(workspace(bytes), bytes, scratch.data(), scratch.data() + n,
+                                      static_cast<int>(n)),
+               "cub::DeviceReduce::Max");
+    double result = 0;
+    scratch.to_host(&result, 1, n);
+    return result;
+  }
+
+  // Stable, by the keys' lowest `bits` bits (CUB's radix sort keeps equal keys in order).
+  static void sort_by_key(Array<std::uint32_t>& keys, Array<std::uint32_t>& values, std::size_t n,
+                          int bits) {
+    if (n == 0) return;
+    static Array<std::uint32_t> other_keys, other_values;
+    other_keys.resize(keys.size());
+    other_values.resize(values.size());
+    cub::DoubleBuffer<std::uint32_t> k(keys.data(), other_keys.data());
+    cub::DoubleBuffer<std::uint32_t> v(values.data(), other_values.data());
+    std::size_t bytes = 0;
+    cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, k, v, static_cast<int>(n), 0, bits),
+               "cub::DeviceRadixSort::SortPairs");
+    cuda_check(cub::DeviceRadixSort::SortPairs(workspace(bytes), bytes, k, v, static_cast<int>(n),
+                                               0, bits),
+               "cub::DeviceRadixSort::SortPairs");
+    if (k.Current() != keys.data()) keys.swap(other_keys);
+    if (v.Current() != values.data()) values.swap(other_values);
+  }
+
+  static void inclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n) {
+    if (n == 0) return;
+    std::size_t bytes = 0;
+    cuda_check(cub::DeviceScan::InclusiveSum(nullptr, bytes, in, out, static_cast<int>(n)),
+               "cub::DeviceScan::InclusiveSum");
+    cuda_check(cub::DeviceScan::InclusiveSum(workspace(bytes), bytes, in, out, static_cast<int>(n)),
+               "cub::DeviceScan::InclusiveSum");
+  }
+
+ private:
+  static unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
+
+  // CUB's temporary storage, kept between calls and grown as needed (a cudaMalloc per call
+  // would cost more than the small steps it serves).
+  static void* workspace(std::size_t bytes) {
+    static Array<unsigned char> space;
+    if (space.size() < bytes) space.resize(bytes);
+    return space.data();
+  }
+};
+
+}  // namespace sluice::exec

@@ -1,0 +1,89 @@
+// A WCSPH run whose particles live in a device's memory for the whole run (issue 16): the
+// model (wcsph_model.hpp) hands it its fields once, calls its stages each step, and copies the
+// fields back only for output, probes and checkpoints. The stages run the loop bodies the host
+// runs (wcsph_loop_bodies.hpp, adami_walls.hpp) through a backend: CUDA on a GPU
+// (wcsph_device_cuda.cu, built where nvcc is found), or the host's own threads over the same
+// arrays ("emulated"), which is how the device run's bookkeeping (sort, scans, gathers,
+// reductions, transfers) is tested on machines without a GPU.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sluice/core/types.hpp"
+#include "sluice/fluid/particle_check.hpp"
+#include "sluice/fluid/wcsph/wcsph_fields.hpp"
+#include "sluice/neighbor/cell_list.hpp"
+
+namespace sluice {
+
+enum class WcsphDevice { kCpu, kGpu, kEmulated };
+
+// Whether this build can run `device` here; when not, `why` says what is missing (a build
+// without CUDA, no GPU found).
+bool wcsph_device_available(WcsphDevice device, std::string& why);
+
+template <int D>
+class WcsphDeviceRun {
+ public:
+  struct Extremes {
+    Real max_speed = 0, max_acceleration = 0;  // over the fluid particles
+  };
+  struct Problem {
+    std::size_t index = 0;  // the first bad particle, in the device's order
+    ParticleProblem what = ParticleProblem::kNone;
+  };
+
+  virtual ~WcsphDeviceRun() = default;
+  // What runs it, for the run's header: the GPU's name, or "emulated".
+  virtual std::string name() const = 0;
+  // Bytes of device memory per particle (the run's arrays, the sort's and the last good state).
+  virtual double bytes_per_particle() const = 0;
+
+  // Copies every field of `host` (its arrays and size) to the device, or back. The device's
+  // order is the host's after an upload; after a download the host holds the device's order,
+  // which is sorted by cell as of the step's neighbour sort.
+  virtual void upload(const WcsphFields<D>& host) = 0;
+  virtual void download(const WcsphFields<D>& host) const = 0;
+
+  // The stages of a step, in the model's order.
+  virtual void kick_drift(Real dt) = 0;
+  virtual void sort_by_cell() = 0;
+  // The bodies' points moved: place their particles (3 reals per body point each).
+  virtual void set_body_motion(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
+                               const std::vector<Vec3>& acceleration) = 0;
+  virtual void update_walls() = 0;
+  virtual void compute_rates() = 0;
+  virtual void kick(Real dt) = 0;
+  virtual Extremes extremes() const = 0;
+  // The fluid's force on each body point from the last rates (3 reals per point).
+  virtual void body_point_forces(std::vector<Vec3>& force) const = 0;
+
+  // The first particle gone wrong, if any.
+  virtual std::optional<Problem> check() const = 0;
+  // Keeps the present state as the last good one (on the device), and copies it back.
+  virtual void remember() = 0;
+  virtual void download_remembered(const WcsphFields<D>& host) const = 0;
+};
+
+// What a device run needs besides the particles: the loop bodies' constants, the cell grid
+// (its geometry; the device keeps its own cell starts) and the domain a fluid particle must not
+// leave.
+template <int D, class Kernel>
+struct WcsphDeviceSetup {
+  WcsphConstants<D, Kernel> constants;
+  CellGridView<D> cells;
+  std::size_t cell_count = 0;
+  std::size_t body_point_count = 0;
+  Real escape_min[D] = {}, escape_max[D] = {};
+};
+
+// The run on `device` (kGpu or kEmulated). Throws std::runtime_error when it cannot start.
+template <int D, class Kernel>
+std::unique_ptr<WcsphDeviceRun<D>> make_wcsph_device_run(WcsphDevice device,
+                                                         const WcsphDeviceSetup<D, Kernel>& setup);
+
+}  // namespace sluice

@@ -1,0 +1,428 @@
+// The device run of wcsph_device_run.hpp over a backend that owns memory and runs loops:
+//   Backend::Array<T>             memory for n values: data(), size(), resize(n),
+//                                 from_host(p, n), to_host(p, n), copy_from(other)
+//   Backend::for_each(n, body)    body(i) for i in [0, n)
+//   Backend::max_of(n, value, scratch)  the largest value(i)
+//   Backend::sort_by_key(keys, values, n, bits)   stable, by the keys' lowest `bits` bits
+//   Backend::inclusive_scan(in, out, n)           out[k] = in[0] + ... + in[k]
+//   Backend::name()
+// Included by wcsph_device_host.cpp (the host's threads) and wcsph_device_cuda.cu (CUDA), so
+// everything here compiles under both; the physics is the loop bodies', not this file's.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sluice/fluid/particle_check.hpp"
+#include "sluice/fluid/wcsph/adami_walls.hpp"
+#include "sluice/fluid/wcsph/wcsph_device_run.hpp"
+#include "sluice/fluid/wcsph/wcsph_loop_bodies.hpp"
+
+namespace sluice {
+
+namespace device_bodies {
+
+// The cell of particle i, and i itself: the sort's key and value.
+template <int D>
+struct CellKey {
+  const Real* position;
+  CellGridView<D> cells;
+  std::uint32_t* key;
+  std::uint32_t* value;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    key[i] = cells.cell_of(position + D * i);
+    value[i] = static_cast<std::uint32_t>(i);
+  }
+};
+
+// The first particle of cell c among keys sorted by cell (n for the cells past the last).
+struct CellStart {
+  const std::uint32_t* key;
+  std::size_t n;
+  std::uint32_t* start;
+  SLUICE_HOST_DEVICE void operator()(std::size_t c) const {
+    std::size_t low = 0, high = n;
+    while (low < high) {
+      const std::size_t mid = (low + high) / 2;
+      if (key[mid] < c) {
+        low = mid + 1;
+      } else {
+        high = mid;
+      }
+    }
+    start[c] = static_cast<std::uint32_t>(low);
+  }
+};
+
+// to[k] = from[order[k]], `width` values per particle.
+template <class T>
+struct Gather {
+  const T* from;
+  T* to;
+  const std::uint32_t* order;
+  int width;
+  SLUICE_HOST_DEVICE void operator()(std::size_t k) const {
+    const std::size_t i = order[k];
+    for (int a = 0; a < width; ++a) to[width * k + a] = from[width * i + a];
+  }
+};
+
+// Whether particle i is fluid, as the count the scan adds up.
+struct FluidFlag {
+  const std::int32_t* kind;
+  std::uint32_t* flag;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const { flag[i] = kind[i] == 0 ? 1u : 0u; }
+};
+
+// A body particle takes its body point's place and velocity (3D values; 2D takes x and z).
+template <int D>
+struct PlaceBodyPoint {
+  WcsphFields<D> f;
+  const Real* point_position;
+  const Real* point_velocity;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    const std::int32_t k = f.body_point[i];
+    if (k < 0) return;
+    for (int a = 0; a < D; ++a) {
+      const int a3 = D == 3 ? a : 2 * a;
+      f.position[D * i + a] = point_position[3 * k + a3];
+      f.velocity[D * i + a] = point_velocity[3 * k + a3];
+    }
+  }
+};
+
+template <int D>
+struct FluidSpeed {
+  WcsphFields<D> f;
+  const Real* vector;  // velocity or acceleration
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
+    if (!f.fluid(i)) return 0.0;
+    double sum = 0;
+    for (int a = 0; a < D; ++a) sum += vector[D * i + a] * vector[D * i + a];
+    return std::sqrt(sum);
+  }
+};
+
+// -i for the first bad particle's index to come out as the largest value.
+template <int D>
+struct MinusBadIndex {
+  ParticleCheck<D> check;
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
+    return check(i) != ParticleProblem::kNone ? -static_cast<double>(i) : -1e300;
+  }
+};
+
+}  // namespace device_bodies
+
+template <int D, class Kernel, class Backend>
+class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
+  template <class T>
+  using Array = typename Backend::template Array<T>;
+  using typename WcsphDeviceRun<D>::Extremes;
+  using typename WcsphDeviceRun<D>::Problem;
+
+ public:
+  explicit WcsphDeviceRunOn(const WcsphDeviceSetup<D, Kernel>& setup) : setup_(setup) {
+    cell_start_.resize(setup.cell_count + 1);
+    point_position_.resize(3 * setup.body_point_count);
+    point_velocity_.resize(3 * setup.body_point_count);
+    point_acceleration_.resize(3 * setup.body_point_count);
+    point_force_.resize(3 * setup.body_point_count);
+    std::uint32_t bits = 1;
+    while ((std::size_t{1} << bits) <= setup.cell_count && bits < 32) ++bits;
+    key_bits_ = static_cast<int>(bits);
+  }
+
+  std::string name() const override { return Backend::name(); }
+
+  double bytes_per_particle() const override {
+    // Reals: 5 vectors and 5 scalars, the gather's scratch (a vector and a scalar), the
+    // reductions' scratch, the last good state (2 vectors, 2 scalars); 32-bit integers: kind
+    // and body point, the gather's scratch, the sort's keys and values (and the sort's own
+    // copies of both), the scan's flags, the last good kind and body point; the packed copy:
+    // 15 floats and a count.
+    const double reals = (5 * D + 5) + (D + 1) + 1 + (2 * D + 2);
+    const double integers = 2 + 1 + 4 + 1 + 2;
+    return reals * sizeof(Real) + integers * 4 + 16 * 4;
+  }
+
+  void upload(const WcsphFields<D>& host) override {
+    n_ = host.size;
+    resize_all();
+    position_.from_host(host.position, D * n_);
+    velocity_.from_host(host.velocity, D * n_);
+    density_.from_host(host.density, n_);
+    pressure_.from_host(host.pressure, n_);
+    mass_.from_host(host.mass, n_);
+    kind_.from_host(host.kind, n_);
+    body_point_.from_host(host.body_point, n_);
+    acceleration_.from_host(host.acceleration, D * n_);
+    density_rate_.from_host(host.density_rate, n_);
+    half_velocity_.from_host(host.half_velocity, D * n_);
+    half_density_.from_host(host.half_density, n_);
+    wall_velocity_.from_host(host.wall_velocity, D * n_);
+    point_acceleration_.from_host(host.body_point_acceleration, 3 * setup_.body_point_count);
+    // The host's set is sorted by cell: this finds the device's cell starts. The packed copy
+    // is the one the host's last rates read, for the bodies' first loads.
+    sort_by_cell();
+    pack(true);
+  }
+
+  void download(const WcsphFields<D>& host) const override {
+    position_.to_host(host.position, D * n_);
+    velocity_.to_host(host.velocity, D * n_);
+    density_.to_host(host.density, n_);
+    pressure_.to_host(host.pressure, n_);
+    mass_.to_host(const_cast<Real*>(host.mass), n_);
+    kind_.to_host(const_cast<std::int32_t*>(host.kind), n_);
+    body_point_.to_host(const_cast<std::int32_t*>(host.body_point), n_);
+    acceleration_.to_host(host.acceleration, D * n_);
+    density_rate_.to_host(host.density_rate, n_);
+    half_velocity_.to_host(host.half_velocity, D * n_);
+    half_density_.to_host(host.half_density, n_);
+    wall_velocity_.to_host(host.wall_velocity, D * n_);
+  }
+
+  void kick_drift(Real dt) override {
+    Backend::for_each(n_, WcsphKickDrift<D>{fields(), dt, setup_.constants.eos});
+  }
+
+  void sort_by_cell() override {
+    Backend::for_each(
+        n_, device_bodies::CellKey<D>{position_.data(), setup_.cells, key_.data(), order_.data()});
+    Backend::sort_by_key(key_, order_, n_, key_bits_);
+    gather(position_, D);
+    gather(velocity_, D);
+    gather(density_, 1);
+    gather(pressure_, 1);
+    gather(mass_, 1);
+    gather(kind_, 1);
+    gather(body_point_, 1);
+    gather(acceleration_, D);
+    gather(density_rate_, 1);
+    gather(half_velocity_, D);
+    gather(half_density_, 1);
+    gather(wall_velocity_, D);
+    Backend::for_each(setup_.cell_count + 1,
+                      device_bodies::CellStart{key_.data(), n_, cell_start_.data()});
+  }
+
+  void set_body_motion(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
+                       const std::vector<Vec3>& acceleration) override {
+    const std::size_t values = 3 * setup_.body_point_count;
+    if (values == 0) return;
+    point_position_.from_host(position.front().data(), values);
+    point_velocity_.from_host(velocity.front().data(), values);
+    point_acceleration_.from_host(acceleration.front().data(), values);
+    Backend::for_each(n_, device_bodies::PlaceBodyPoint<D>{fields(), point_position_.data(),
+                                                           point_velocity_.data()});
+  }
+
+  void update_walls() override {
+    pack(false);
+    Backend::for_each(n_, AdamiWall<D, Kernel>{neighbourhood()});
+  }
+
+  void compute_rates() override {
+    pack(true);
+    Backend::for_each(n_, WcsphRates<D, Kernel>{neighbourhood()});
+  }
+
+  void kick(Real dt) override {
+    Backend::for_each(n_, WcsphKick<D>{fields(), dt, setup_.constants.eos});
+  }
+
+  Extremes extremes() const override {
+    Extremes e;
+    e.max_speed =
+        Backend::max_of(n_, device_bodies::FluidSpeed<D>{fields(), velocity_.data()}, scratch_);
+    e.max_acceleration =
+        Backend::max_of(n_, device_bodies::FluidSpeed<D>{fields(), acceleration_.data()}, scratch_);
+    return e;
+  }
+
+  void body_point_forces(std::vector<Vec3>& force) const override {
+    if (setup_.body_point_count == 0) return;
+    Backend::for_each(n_, WcsphBodyPointForce<D, Kernel>{neighbourhood(), point_force_.data()});
+    point_force_.to_host(force.front().data(), 3 * setup_.body_point_count);
+  }
+
+  std::optional<Problem> check() const override {
+    const double first = Backend::max_of(n_, device_bodies::MinusBadIndex<D>{checker()}, scratch_);
+    if (first < -1e299) return std::nullopt;
+    Problem p;
+    p.index = static_cast<std::size_t>(-first);
+    // The one particle's problem, from its values copied back.
+    Real x[D], v[D], rho, pressure;
+    std::int32_t kind;
+    position_.to_host(x, D, D * p.index);
+    velocity_.to_host(v, D, D * p.index);
+    density_.to_host(&rho, 1, p.index);
+    pressure_.to_host(&pressure, 1, p.index);
+    kind_.to_host(&kind, 1, p.index);
+    ParticleCheck<D> one = checker();
+    one.position = x;
+    one.velocity = v;
+    one.density = &rho;
+    one.pressure = &pressure;
+    one.kind = &kind;
+    p.what = one(0);
+    return p;
+  }
+
+  void remember() override {
+    good_position_.copy_from(position_);
+    good_velocity_.copy_from(velocity_);
+    good_density_.copy_from(density_);
+    good_pressure_.copy_from(pressure_);
+    good_kind_.copy_from(kind_);
+    good_body_point_.copy_from(body_point_);
+  }
+
+  void download_remembered(const WcsphFields<D>& host) const override {
+    good_position_.to_host(host.position, D * n_);
+    good_velocity_.to_host(host.velocity, D * n_);
+    good_density_.to_host(host.density, n_);
+    good_pressure_.to_host(host.pressure, n_);
+    good_kind_.to_host(const_cast<std::int32_t*>(host.kind), n_);
+    good_body_point_.to_host(const_cast<std::int32_t*>(host.body_point), n_);
+  }
+
+ private:
+  void resize_all() {
+    for (auto* a : {&position_, &velocity_, &acceleration_, &half_velocity_, &wall_velocity_})
+      a->resize(D * n_);
+    for (auto* a : {&density_, &pressure_, &mass_, &density_rate_, &half_density_}) a->resize(n_);
+    kind_.resize(n_);
+    body_point_.resize(n_);
+    key_.resize(n_);
+    order_.resize(n_);
+    flag_.resize(n_);
+    gather_vector_.resize(D * n_);
+    gather_scalar_.resize(n_);
+    gather_int_.resize(n_);
+    scratch_.resize(n_);
+    for (auto& a : packed_position_) a.resize(n_);
+    for (auto& a : packed_velocity_) a.resize(n_);
+    for (auto& a : packed_viscous_velocity_) a.resize(n_);
+    for (auto* a : {&packed_density_, &packed_pressure_, &packed_pressure_term_, &packed_volume_,
+                    &packed_fluid_, &packed_viscous_weight_})
+      a->resize(n_);
+    fluid_before_.resize(n_ + 1);
+  }
+
+  WcsphFields<D> fields() const {
+    WcsphFields<D> f;
+    f.size = n_;
+    f.position = mutable_data(position_);
+    f.velocity = mutable_data(velocity_);
+    f.density = mutable_data(density_);
+    f.pressure = mutable_data(pressure_);
+    f.mass = mass_.data();
+    f.kind = kind_.data();
+    f.body_point = body_point_.data();
+    f.acceleration = mutable_data(acceleration_);
+    f.density_rate = mutable_data(density_rate_);
+    f.half_velocity = mutable_data(half_velocity_);
+    f.half_density = mutable_data(half_density_);
+    f.wall_velocity = mutable_data(wall_velocity_);
+    f.body_point_acceleration = point_acceleration_.data();
+    return f;
+  }
+  template <class T>
+  static T* mutable_data(const Array<T>& a) {
+    return const_cast<T*>(a.data());
+  }
+
+  WcsphNeighbourhood<D, Kernel> neighbourhood() const {
+    return {fields(), packed_view(), cells(), setup_.constants};
+  }
+
+  CellGridView<D> cells() const {
+    CellGridView<D> c = setup_.cells;
+    c.cell_start = cell_start_.data();
+    return c;
+  }
+
+  ParticleCheck<D> checker() const {
+    ParticleCheck<D> c{position_.data(),
+                       velocity_.data(),
+                       density_.data(),
+                       pressure_.data(),
+                       kind_.data(),
+                       {},
+                       {}};
+    for (int a = 0; a < D; ++a) {
+      c.escape_min[a] = setup_.escape_min[a];
+      c.escape_max[a] = setup_.escape_max[a];
+    }
+    return c;
+  }
+
+  PackedParticles::Arrays packed_arrays() const {
+    PackedParticles::Arrays p{};
+    for (int a = 0; a < 3; ++a) {
+      p.position[a] = mutable_data(packed_position_[a]);
+      p.velocity[a] = mutable_data(packed_velocity_[a]);
+      p.viscous_velocity[a] = mutable_data(packed_viscous_velocity_[a]);
+    }
+    p.density = mutable_data(packed_density_);
+    p.pressure = mutable_data(packed_pressure_);
+    p.pressure_term = mutable_data(packed_pressure_term_);
+    p.volume = mutable_data(packed_volume_);
+    p.fluid = mutable_data(packed_fluid_);
+    p.viscous_weight = mutable_data(packed_viscous_weight_);
+    p.fluid_before = mutable_data(fluid_before_);
+    return p;
+  }
+  PackedParticles::View packed_view() const { return packed_arrays().view(); }
+
+  // The packed copy and fluid_before (fluid_before[k] = fluid particles among [0, k)).
+  void pack(bool with_rates) {
+    Backend::for_each(
+        n_, WcsphPack<D>{fields(), packed_arrays(), setup_.constants.no_slip, with_rates});
+    Backend::for_each(n_, device_bodies::FluidFlag{kind_.data(), flag_.data()});
+    const std::uint32_t zero = 0;
+    fluid_before_.from_host(&zero, 1);
+    Backend::inclusive_scan(flag_.data(), fluid_before_.data() + 1, n_);
+  }
+
+  // Reorders a field by the sort's order through a scratch array of the same size, which the
+  // field then swaps with (so each scratch keeps its size).
+  template <class T>
+  void gather(Array<T>& field, int width) {
+    Array<T>& scratch = scratch_for<T>(width);
+    Backend::for_each(n_,
+                      device_bodies::Gather<T>{field.data(), scratch.data(), order_.data(), width});
+    field.swap(scratch);
+  }
+  template <class T>
+  Array<T>& scratch_for(int width) {
+    if constexpr (std::is_same_v<T, Real>) {
+      return width == 1 ? gather_scalar_ : gather_vector_;
+    } else {
+      return gather_int_;
+    }
+  }
+
+  WcsphDeviceSetup<D, Kernel> setup_;
+  std::size_t n_ = 0;
+  int key_bits_ = 32;
+  Array<Real> position_, velocity_, density_, pressure_, mass_, acceleration_, density_rate_,
+      half_velocity_, half_density_, wall_velocity_;
+  Array<std::int32_t> kind_, body_point_;
+  Array<std::uint32_t> key_, order_, flag_, cell_start_, fluid_before_;
+  Array<Real> gather_vector_, gather_scalar_;
+  Array<std::int32_t> gather_int_;
+  mutable Array<double> scratch_;
+  Array<float> packed_position_[3], packed_velocity_[3], packed_viscous_velocity_[3];
+  Array<float> packed_density_, packed_pressure_, packed_pressure_term_, packed_volume_,
+      packed_fluid_, packed_viscous_weight_;
+  Array<Real> point_position_, point_velocity_, point_acceleration_;
+  mutable Array<Real> point_force_;
+  Array<Real> good_position_, good_velocity_, good_density_, good_pressure_;
+  Array<std::int32_t> good_kind_, good_body_point_;
+};
+
+}  // namespace sluice

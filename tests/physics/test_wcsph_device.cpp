@@ -1,0 +1,170 @@
+// The WCSPH device run (issue 16). On the host's threads (`model.device: emulated`) it runs the
+// loop bodies the CPU path runs, in the same order, over its own copy of the particles with its
+// own sort, scans, gathers and transfers: it must give the CPU's answer bit for bit. On a GPU
+// (`model.device: gpu`) the same loop bodies run as CUDA kernels, whose rounding differs (fused
+// multiply-adds, another order of the reductions), so the answers must agree with the CPU's
+// within the tolerances of the physics checks: F1, F2, B1 and the bench case's front and
+// energy. The GPU checks are skipped where this build or this machine has no GPU.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "physics_support.hpp"
+#include "sluice/fluid/wcsph/wcsph_device_run.hpp"
+#include "sluice/sim/probes.hpp"
+
+namespace sluice {
+namespace {
+
+// What a run ends with: the particles (as output sees them), the bodies and their loads.
+template <int D>
+struct RunEnd {
+  std::vector<Vec<D>> position, velocity;
+  std::vector<Real> density, pressure;
+  std::vector<Vec3> body_position, fluid_force;
+  long steps = 0;
+};
+
+template <int D>
+RunEnd<D> run_to(const std::string& file, std::vector<std::string> overrides, double end) {
+  Simulation<D> sim(testing::load_case(file, overrides));
+  RunEnd<D> out;
+  testing::run_until(sim, end, [&](const StepClock&) { ++out.steps; });
+  sim.fluid().frame();  // a reader of the particles: the device's copy comes back first
+  const auto& ps = sim.state().particles;
+  out.position = ps.position;
+  out.velocity = ps.velocity;
+  out.density = ps.density;
+  out.pressure = ps.pressure;
+  for (std::size_t b = 0; b < sim.bodies().count(); ++b) {
+    out.body_position.push_back(sim.bodies().state(b).position);
+    out.fluid_force.push_back(sim.coupler().fluid_force()[b]);
+  }
+  return out;
+}
+
+template <int D>
+void expect_same_bits(const std::string& file, const std::vector<std::string>& overrides,
+                      double end) {
+  std::vector<std::string> on_device = overrides;
+  on_device.push_back("model.device=emulated");
+  const RunEnd<D> cpu = run_to<D>(file, overrides, end);
+  const RunEnd<D> device = run_to<D>(file, on_device, end);
+  ASSERT_GT(cpu.steps, 10) << file;
+  EXPECT_EQ(device.steps, cpu.steps) << file;
+  ASSERT_EQ(device.position.size(), cpu.position.size()) << file;
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < cpu.position.size(); ++i) {
+    if (device.position[i] != cpu.position[i] || device.velocity[i] != cpu.velocity[i] ||
+        device.density[i] != cpu.density[i] || device.pressure[i] != cpu.pressure[i])
+      ++differ;
+  }
+  EXPECT_EQ(differ, 0u) << file << ": particles that differ after " << cpu.steps << " steps";
+  EXPECT_EQ(device.body_position, cpu.body_position) << file;
+  EXPECT_EQ(device.fluid_force, cpu.fluid_force) << file;
+}
+
+TEST(WcsphDevice, EmulatedRunIsTheCpuRunBitForBit) {
+  expect_same_bits<2>("dam_break_2d.yaml", {"spacing=0.05"}, 0.3);
+  // A floating body: its points move with it, its load comes back from the device.
+  expect_same_bits<2>("floating_box_2d.yaml", {}, 0.3);
+  // 3D, with five bodies on joints and wheels resting in the water.
+  expect_same_bits<3>("fording.yaml", {}, 0.05);
+}
+
+TEST(WcsphDevice, GpuRefusedWithTheReasonWhereNoneIsFound) {
+  std::string why;
+  if (wcsph_device_available(WcsphDevice::kGpu, why)) GTEST_SKIP() << "a GPU is here";
+  try {
+    Simulation<2> sim(testing::load_case("dam_break_2d.yaml", {"model.device=gpu"}));
+    FAIL() << "a run on the GPU started without one";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("model.device"), std::string::npos) << message;
+    EXPECT_NE(message.find(why), std::string::npos) << message;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// On a GPU.
+
+bool gpu_here() {
+  std::string why;
+  if (wcsph_device_available(WcsphDevice::kGpu, why)) return true;
+  std::printf("no GPU: %s\n", why.c_str());
+  return false;
+}
+
+// F1: the still tank's bottom pressure after 2 s, on the GPU and on the CPU.
+double tank_bottom_pressure(const std::vector<std::string>& overrides) {
+  Simulation<2> sim(testing::load_case("hydrostatic_2d.yaml", overrides));
+  testing::run_until(sim, 2.0, [](const StepClock&) {});
+  io::ProbeConfig bottom;
+  bottom.kind = io::ProbeKind::kPressure;
+  bottom.point = Vec3(0.5, 0, 0);
+  return Probes({bottom}, "").measure(sim.fluid())[0];
+}
+
+TEST(WcsphGpu, StillTankAgreesWithTheCpu) {
+  if (!gpu_here()) GTEST_SKIP() << "no GPU";
+  const double rho_g_h = 1000 * 9.81 * 1.0;
+  const double cpu = tank_bottom_pressure({});
+  const double gpu = tank_bottom_pressure({"model.device=gpu"});
+  std::printf("F1 bottom pressure: GPU %.2f Pa, CPU %.2f Pa (%+.4f %% of rho g H apart)\n", gpu,
+              cpu, 100 * (gpu - cpu) / rho_g_h);
+  EXPECT_NEAR(gpu, rho_g_h, 0.03 * rho_g_h);  // F1's bar
+  EXPECT_NEAR(gpu, cpu, 0.002 * rho_g_h);
+}
+
+TEST(WcsphGpu, DamBreakFrontAgreesWithTheCpu) {
+  if (!gpu_here()) GTEST_SKIP() << "no GPU";
+  const double cpu = testing::dam_break_front_rms({});
+  const double gpu = testing::dam_break_front_rms({"model.device=gpu"});
+  std::printf("F2 front RMS: GPU %.4f m, CPU %.4f m\n", gpu, cpu);
+  EXPECT_LT(gpu, 0.30);  // F2's bar
+  EXPECT_NEAR(gpu, cpu, 0.01);
+}
+
+TEST(WcsphGpu, FloatingBoxDraftAgreesWithTheCpu) {
+  if (!gpu_here()) GTEST_SKIP() << "no GPU";
+  const auto cpu = testing::floating_box_draft({});
+  const auto gpu = testing::floating_box_draft({"model.device=gpu"});
+  std::printf("B1 mean draft: GPU %.4f m, CPU %.4f m; drift GPU %.3g mm, CPU %.3g mm\n", gpu.draft,
+              cpu.draft, 1e3 * gpu.drift, 1e3 * cpu.drift);
+  EXPECT_NEAR(gpu.draft, 0.7, 0.03 * 0.7);  // B1's bars
+  EXPECT_LT(gpu.drift, 0.01);
+  EXPECT_NEAR(gpu.draft, cpu.draft, 0.002 * 0.7);
+}
+
+// The bench case (cases/bench_dam_break_3d.yaml) at a coarser spacing: the surge front and the
+// fluid's energy after 0.3 s.
+struct BenchEnd {
+  double front = 0, kinetic = 0, potential = 0;
+};
+BenchEnd bench_end(const std::vector<std::string>& device) {
+  std::vector<std::string> overrides{"spacing=0.02"};
+  overrides.insert(overrides.end(), device.begin(), device.end());
+  Simulation<3> sim(testing::load_case("bench_dam_break_3d.yaml", overrides));
+  testing::run_until(sim, 0.3, [](const StepClock&) {});
+  const FluidEnergy e = sim.fluid().energy();
+  return {sim.fluid().surge_front(0), e.kinetic, e.potential};
+}
+
+TEST(WcsphGpu, BenchCaseFrontAndEnergyAgreeWithTheCpu) {
+  if (!gpu_here()) GTEST_SKIP() << "no GPU";
+  const BenchEnd cpu = bench_end({});
+  const BenchEnd gpu = bench_end({"model.device=gpu"});
+  std::printf(
+      "bench case at 0.3 s: front GPU %.4f / CPU %.4f m, kinetic %.3f / %.3f J, "
+      "potential %.3f / %.3f J\n",
+      gpu.front, cpu.front, gpu.kinetic, cpu.kinetic, gpu.potential, cpu.potential);
+  EXPECT_NEAR(gpu.front, cpu.front, 0.02);  // half a spacing
+  EXPECT_NEAR(gpu.kinetic, cpu.kinetic, 0.02 * cpu.kinetic);
+  EXPECT_NEAR(gpu.potential, cpu.potential, 0.002 * std::abs(cpu.potential));
+}
+
+}  // namespace
+}  // namespace sluice
