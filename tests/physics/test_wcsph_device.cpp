@@ -13,6 +13,9 @@
 #include <vector>
 
 #include "physics_support.hpp"
+#if defined(SLUICE_WITH_CUDA)
+#include "sluice/exec/cuda_backend_check.hpp"
+#endif
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/sim/probes.hpp"
 
@@ -96,6 +99,16 @@ bool gpu_here() {
   if (wcsph_device_available(WcsphDevice::kGpu, why)) return true;
   std::printf("no GPU: %s\n", why.c_str());
   return false;
+}
+
+// The backend's own pieces first (its arrays, a loop, the sort, the scan, the reduction), on a
+// few values and on a million: what fails here is the backend, not the model.
+TEST(WcsphGpu, BackendAgreesWithTheHost) {
+  if (!gpu_here()) GTEST_SKIP() << "no GPU";
+#if defined(SLUICE_WITH_CUDA)
+  for (const std::size_t n : {std::size_t{1000}, std::size_t{1} << 20})
+    EXPECT_EQ(exec::check_cuda_backend(n), "") << n << " values";
+#endif
 }
 
 // F1: the still tank's bottom pressure after 2 s, on the GPU and on the CPU.
