@@ -9,7 +9,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,10 +30,6 @@ class WcsphDeviceRun {
  public:
   struct Extremes {
     Real max_speed = 0, max_acceleration = 0;  // over the fluid particles
-  };
-  struct Problem {
-    std::size_t index = 0;  // the first bad particle, in the device's order
-    ParticleProblem what = ParticleProblem::kNone;
   };
 
   virtual ~WcsphDeviceRun() = default;
@@ -62,8 +57,8 @@ class WcsphDeviceRun {
   // The fluid's force on each body point from the last rates (3 reals per point).
   virtual void body_point_forces(std::vector<Vec3>& force) const = 0;
 
-  // The first particle gone wrong, if any.
-  virtual std::optional<Problem> check() const = 0;
+  // Whether a particle went wrong (particle_check.hpp); the host's copy then names it.
+  virtual bool any_problem() const = 0;
   // Keeps the present state as the last good one (on the device), and copies it back.
   virtual void remember() = 0;
   virtual void download_remembered(const WcsphFields<D>& host) const = 0;

@@ -104,7 +104,8 @@ struct FluidSpeed {
   }
 };
 
-// -i for the first bad particle's index to come out as the largest value.
+// -i for a bad particle (the first one's index would come out as the largest value), else
+// -1e300.
 template <int D>
 struct MinusBadIndex {
   ParticleCheck<D> check;
@@ -120,7 +121,6 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   template <class T>
   using Array = typename Backend::template Array<T>;
   using typename WcsphDeviceRun<D>::Extremes;
-  using typename WcsphDeviceRun<D>::Problem;
 
  public:
   explicit WcsphDeviceRunOn(const WcsphDeviceSetup<D, Kernel>& setup) : setup_(setup) {
@@ -248,27 +248,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     point_force_.to_host(force.front().data(), 3 * setup_.body_point_count);
   }
 
-  std::optional<Problem> check() const override {
-    const double first = Backend::max_of(n_, device_bodies::MinusBadIndex<D>{checker()}, scratch_);
-    if (first < -1e299) return std::nullopt;
-    Problem p;
-    p.index = static_cast<std::size_t>(-first);
-    // The one particle's problem, from its values copied back.
-    Real x[D], v[D], rho, pressure;
-    std::int32_t kind;
-    position_.to_host(x, D, D * p.index);
-    velocity_.to_host(v, D, D * p.index);
-    density_.to_host(&rho, 1, p.index);
-    pressure_.to_host(&pressure, 1, p.index);
-    kind_.to_host(&kind, 1, p.index);
-    ParticleCheck<D> one = checker();
-    one.position = x;
-    one.velocity = v;
-    one.density = &rho;
-    one.pressure = &pressure;
-    one.kind = &kind;
-    p.what = one(0);
-    return p;
+  bool any_problem() const override {
+    return Backend::max_of(n_, device_bodies::MinusBadIndex<D>{checker()}, scratch_) > -1e299;
   }
 
   void remember() override {

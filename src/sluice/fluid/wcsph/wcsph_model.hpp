@@ -123,7 +123,7 @@ class WcsphModel final : public ParticleFluid<D> {
 
   std::optional<std::string> check(const StepClock& clock) const override {
     // The device finds whether a particle went wrong; the host's copy names it.
-    if (device_ && !device_->check()) return std::nullopt;
+    if (device_ && !device_->any_problem()) return std::nullopt;
     return Base::check(clock);
   }
 
