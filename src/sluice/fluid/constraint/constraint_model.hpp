@@ -25,6 +25,7 @@
 #include "sluice/fluid/constraint/constraint_parameters.hpp"
 #include "sluice/fluid/constraint/density_constraints.hpp"
 #include "sluice/fluid/constraint/viscosity_constraints.hpp"
+#include "sluice/fluid/flat_wall_share.hpp"
 #include "sluice/fluid/monolithic_case.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
@@ -377,27 +378,15 @@ class ConstraintModel final : public ParticleFluid<D> {
     return ratio;
   }
 
-  // For each body point, what a particle at its depth (in spacings, rounded to a layer) in a
-  // flat lattice wall of as many layers as the body's sums from its own wall.
+  // For each body point, what a particle at its depth in a flat lattice wall of as many layers
+  // as the body's sums from its own wall (flat_wall_share.hpp).
   void find_body_point_shares() {
     const int layers = wall_layers(kernel_.support(), dx_);
-    std::vector<Real> share(static_cast<std::size_t>(layers));
-    for (int d = 0; d < layers; ++d) {
-      // The wall's layers lie at offsets -d .. layers - 1 - d spacings from the particle's.
-      share[std::size_t(d)] = lattice_sum([&](Real r, Real x) {
-        const Real offset = x / dx_;
-        return offset > -d - 0.5 && offset < layers - d - 0.5 ? mass_ * kernel_.value(r) : 0.0;
-      });
-    }
-    const BodyPoints& points = this->body_points();
-    const std::vector<BodyKinematics> motion = bodies_->motion();
-    body_point_share_.resize(points.size());
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const Real depth =
-          -bodies_->nearest_on_body(points[k].body, points.position(k, motion)).distance / dx_;
-      const int d = std::clamp(static_cast<int>(std::lround(depth - 0.5)), 0, layers - 1);
-      body_point_share_[k] = share[std::size_t(d)];
-    }
+    const auto w = [this](Real r) { return mass_ * kernel_.value(r); };
+    const std::vector<int> layer = body_point_layers(*bodies_, this->body_points(), dx_, layers);
+    body_point_share_.resize(layer.size());
+    for (std::size_t k = 0; k < layer.size(); ++k)
+      body_point_share_[k] = flat_wall_sum<D>(w, kernel_.support(), dx_, layers, layer[k]);
   }
 
   // Adds (linear, angular) to row r's entry for `body` among the row's entries from `from`.
