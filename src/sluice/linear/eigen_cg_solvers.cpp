@@ -19,10 +19,17 @@ class EigenIterative final : public SparseSolver {
     solver_.compute(a);
     SolveReport report;
     if (solver_.info() != Eigen::Success) return report;  // the preconditioner failed
-    x = solver_.solveWithGuess(b, x);
+    const Eigen::VectorXd guess = x;
+    x = solver_.solveWithGuess(b, guess);
     report.iterations = static_cast<int>(solver_.iterations());
+    if (!x.allFinite()) {
+      // BiCGSTAB broke down (a step's denominator vanished, and NaN spread through x): one
+      // more try from a zero guess, whose Krylov space differs from the warm start's.
+      x = solver_.solveWithGuess(b, Eigen::VectorXd::Zero(b.size()));
+      report.iterations += static_cast<int>(solver_.iterations());
+    }
     report.relative_residual = solver_.error();
-    report.converged = solver_.info() == Eigen::Success;
+    report.converged = solver_.info() == Eigen::Success && x.allFinite();
     return report;
   }
 

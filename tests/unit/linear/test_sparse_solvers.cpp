@@ -67,6 +67,26 @@ TEST(SparseSolvers, BicgstabSolvesASystemThatIsNotSymmetric) {
   EXPECT_LT((x - expected).norm() / expected.norm(), 1e-6);
 }
 
+// A warm start on which BiCGSTAB breaks down at its first step: r0 = b - A x0 = (0, 1) and
+// A r0 = (1, 0), so r0 . A r0 = 0 divides the step. The solver starts again from zero, where
+// r0 = b and r0 . A r0 = 1, and solves; the MPS pressure solve met such a step
+// (docs/validation.md).
+TEST(SparseSolvers, BicgstabStartsAgainFromZeroWhereTheWarmStartBreaksDown) {
+  SparseRows a(2, 2);
+  a.insert(0, 0) = 1;
+  a.insert(0, 1) = 1;
+  a.insert(1, 0) = -1;
+  a.makeCompressed();
+  const Eigen::Vector2d b(1, 1);
+  auto solver = make_sparse_solver("bicgstab_diagonal", SolverSettings{1e-12, 100});
+  Eigen::VectorXd x = Eigen::Vector2d(0, 1);
+  const SolveReport report = solver->solve(a, b, x);
+  EXPECT_TRUE(report.converged);
+  ASSERT_TRUE(x.allFinite());
+  EXPECT_NEAR(x[0], -1, 1e-9);  // A^-1 b = (-1, 2)
+  EXPECT_NEAR(x[1], 2, 1e-9);
+}
+
 TEST(SparseSolvers, ReportsAFailureToConverge) {
   const SparseRows a = poisson(40, 1e-3);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(a.rows());
