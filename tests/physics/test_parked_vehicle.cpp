@@ -74,6 +74,9 @@ void expect_hydrostatic_lift(const std::string& model) {
 TEST(ParkedVehicle, FeelsTheHydrostaticLiftWithWcsph) {
   expect_hydrostatic_lift("wcsph");
 }
+TEST(ParkedVehicle, FeelsTheHydrostaticLiftWithMps) {
+  expect_hydrostatic_lift("mps");
+}
 TEST(ParkedVehicle, FeelsTheHydrostaticLiftWithConstraintFluid) {
   expect_hydrostatic_lift("constraint");
 }

@@ -55,7 +55,8 @@ class MpsModel final : public ParticleFluid<D> {
   std::string describe() const override {
     return fmt::format(
         "mps ({}): r_e = {:.4g} m ({} dx), n0 = {:.4g}, {}lambda = {:.4g} dx^2, beta = {}, "
-        "gamma = {}, alpha = {:.3g} 1/Pa ({} form), negative pressure {}, wall pressure {}, {}",
+        "gamma = {}, alpha = {:.3g} 1/Pa ({} form), negative pressure {}, wall pressure {}, "
+        "gradient against the neighbourhood's smallest pressure from n* = {} n0, {}",
         explicit_variant() ? "explicit" : "incompressible", weight_.re, p_.re_over_dx, lattice_.n0,
         laplacian_weight_.re == weight_.re
             ? std::string()
@@ -64,7 +65,7 @@ class MpsModel final : public ParticleFluid<D> {
         laplacian_lattice_.lambda / (this->state().spacing * this->state().spacing),
         p_.surface_threshold, p_.source_relaxation, p_.compressibility,
         p_.pressure_memory ? "rate" : "ikeda", p_.keep_negative_pressure ? "kept" : "clamped",
-        extrapolated_walls() ? "extrapolated" : "solved",
+        extrapolated_walls() ? "extrapolated" : "solved", p_.minimum_density,
         explicit_variant()
             ? fmt::format("c0 = {:.4g} m/s", p_.sound_speed)
             : fmt::format("solver {} (tolerance {:.3g})", p_.solver, p_.solver_settings.tolerance));
@@ -402,13 +403,15 @@ class MpsModel final : public ParticleFluid<D> {
     const MpsOperators<D> op = operators();
     const auto& surface = ps[surface_];
     const Real scale = dt / density_;
+    const auto& n = ps[number_density_];
+    const Real full = p_.minimum_density * lattice_.n0;
     velocity_scratch_.resize(ps.size());
     exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;
       velocity_scratch_[i] =
           -scale * op.gradient(
                        i, ps.pressure, [&](std::size_t j) { return pressure_neighbour(j); },
-                       surface[i] != 0);
+                       surface[i] != 0, !(n[i] < full));
     });
     exec::Default::for_each(ps.size(), [&](std::size_t i) {
       if (!ps.is_fluid(i)) return;

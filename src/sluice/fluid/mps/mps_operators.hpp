@@ -8,6 +8,8 @@
 //                   by default d / n0 is replaced by the inverse of the corrective matrix
 //                   C_i = sum_j w_ij r_ij r_ij^T / |r_ij|^2 (Khayyer & Gotoh 2011), without
 //                   which the repulsive bias of p^ lets a still tank's pressure sag by 10 %.
+//                   Where i's neighbourhood is one-sided (near a free surface) the caller may
+//                   measure against p_i instead of p^_i: see MpsParameters::minimum_density.
 // Here r_ij = r_j - r_i. `include(j)` picks the neighbours an operator sums over (the dummy
 // wall layers count in the number density only).
 #pragma once
@@ -90,14 +92,16 @@ class MpsOperators {
   }
 
   // `plain`: the d / n0 form even where the corrective matrix is on (free-surface particles,
-  // whose one-sided neighbourhood the matrix would turn into an outsized push).
+  // whose one-sided neighbourhood the matrix would turn into an outsized push). `minimum`:
+  // measured against p^_i; else against p_i.
   template <class Include>
-  Vec<D> gradient(std::size_t i, const std::vector<Real>& p, Include&& include,
-                  bool plain = false) const {
+  Vec<D> gradient(std::size_t i, const std::vector<Real>& p, Include&& include, bool plain = false,
+                  bool minimum = true) const {
     Real lowest = p[i];
-    neighbours_.for_each(i, [&](std::size_t j) {
-      if (include(j) && w_((x_[j] - x_[i]).norm()) > 0) lowest = std::min(lowest, p[j]);
-    });
+    if (minimum)
+      neighbours_.for_each(i, [&](std::size_t j) {
+        if (include(j) && w_((x_[j] - x_[i]).norm()) > 0) lowest = std::min(lowest, p[j]);
+      });
     Vec<D> sum = Vec<D>::Zero();
     Eigen::Matrix<Real, D, D> moment = Eigen::Matrix<Real, D, D>::Zero();
     neighbours_.for_each(i, [&](std::size_t j) {

@@ -31,6 +31,13 @@ struct MpsParameters {
   bool pressure_memory = true;        // false: Ikeda's form, which forgets p^n (comparison)
   bool keep_negative_pressure = false;
   bool gradient_correction = true;  // the corrective matrix in the pressure gradient
+  // The number density n* / n0 from which the pressure gradient measures against the
+  // neighbourhood's smallest pressure p^ (which keeps particles from clustering); below it,
+  // near a free surface, against the particle's own. There the neighbourhood is one-sided,
+  // the term (p_i - p^) C^-1 sum r w / r^2 does not average out, and it carried 5-7 % of the
+  // water's weight in the top layers of 3D water: a body a few spacings under the surface
+  // felt 10.7 % less than its hydrostatic lift (docs/validation.md, B5). 0: p^ everywhere.
+  double minimum_density = 0.98;
   MpsWallPressure wall_pressure = MpsWallPressure::kExtrapolated;
   double artificial_viscosity = 0.05;  // explicit variant: nu_a = alpha c0 l0
   double collision_distance = 0.85;    // in l0; 0 turns the collision model off
