@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "sluice/core/types.hpp"
-#include "sluice/fluid/particle_check.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 

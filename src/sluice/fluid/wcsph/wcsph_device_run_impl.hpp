@@ -104,13 +104,12 @@ struct FluidSpeed {
   }
 };
 
-// -i for a bad particle (the first one's index would come out as the largest value), else
-// -1e300.
+// 1 for a particle gone wrong, else 0: their largest tells whether there is one.
 template <int D>
-struct MinusBadIndex {
+struct BadParticle {
   ParticleCheck<D> check;
   SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
-    return check(i) != ParticleProblem::kNone ? -static_cast<double>(i) : -1e300;
+    return check(i) != ParticleProblem::kNone ? 1.0 : 0.0;
   }
 };
 
@@ -249,7 +248,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   bool any_problem() const override {
-    return Backend::max_of(n_, device_bodies::MinusBadIndex<D>{checker()}, scratch_) > -1e299;
+    return Backend::max_of(n_, device_bodies::BadParticle<D>{checker()}, scratch_) > 0;
   }
 
   void remember() override {
