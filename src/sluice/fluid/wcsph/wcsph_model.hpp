@@ -107,18 +107,19 @@ class WcsphModel final : public ParticleFluid<D> {
     }));
   }
 
+  // On a device, the body points alone go there: a pass over the host's particles, whose copy
+  // is stale anyway, would cost a run of many millions of particles more than its step.
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override {
-    Base::receive_body_motion(motion);
-    if (!device_) return;
+    if (!device_) return Base::receive_body_motion(motion);
     const BodyPoints& points = this->body_points();
     std::vector<Vec3> position(points.size()), velocity(points.size());
+    auto& acceleration = this->state().body_point_acceleration;
     for (std::size_t k = 0; k < points.size(); ++k) {
       position[k] = points.position(k, motion);
       velocity[k] = points.velocity(k, motion);
+      acceleration[k] = points.acceleration(k, motion);
     }
-    on_device([&] {
-      device_->set_body_motion(position, velocity, this->state().body_point_acceleration);
-    });
+    on_device([&] { device_->set_body_motion(position, velocity, acceleration); });
   }
 
   std::optional<std::string> check(const StepClock& clock) const override {
