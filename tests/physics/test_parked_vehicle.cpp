@@ -77,6 +77,9 @@ TEST(ParkedVehicle, FeelsTheHydrostaticLiftWithWcsph) {
 TEST(ParkedVehicle, FeelsTheHydrostaticLiftWithMps) {
   expect_hydrostatic_lift("mps");
 }
+TEST(ParkedVehicle, FeelsTheHydrostaticLiftWithPenaltySph) {
+  expect_hydrostatic_lift("penalty-sph");
+}
 TEST(ParkedVehicle, FeelsTheHydrostaticLiftWithConstraintFluid) {
   expect_hydrostatic_lift("constraint");
 }
