@@ -20,6 +20,7 @@
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
+#include "sluice/fluid/penalty_sph/lattice_sums.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
 #include "sluice/fluid/penalty_sph/stiffness_suggestion.hpp"
@@ -39,9 +40,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
         rest_density_(config.fluid.density),
         viscosity_(config.fluid.density * config.fluid.kinematic_viscosity),
         particle_mass_(config.fluid.density * std::pow(config.spacing, D)),
-        lattice_correction_(lattice_correction(config.spacing)),
+        lattice_correction_(rest_density_ /
+                            (particle_mass_ * lattice_poly6_sum(kernels_, config.spacing))),
         pressure_weight_(parameters.muller_pressure_force ? 0.5 : 1.0),
-        gradient_gain_(lattice_gradient_gain(config.spacing)),
+        gradient_gain_(lattice_gradient_gain(kernels_, config.spacing)),
         damping_(parameters.artificial_viscosity * std::sqrt(parameters.gas_stiffness) *
                  parameters.smoothing_length(config.spacing, D)) {
     settings_.law.stiffness = p_.stiffness > 0 ? p_.stiffness : suggested_stiffness();
@@ -185,37 +187,6 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
  private:
-  // rho0 over the poly6 sum of a full lattice at the spacing.
-  Real lattice_correction(Real dx) const {
-    const int n = static_cast<int>(std::ceil(kernels_.h / dx));
-    Real sum = 0;
-    for (int a = -n; a <= n; ++a) {
-      for (int b = -n; b <= n; ++b) {
-        for (int c = (D == 3 ? -n : 0); c <= (D == 3 ? n : 0); ++c) {
-          sum += kernels_.poly6(dx * std::sqrt(Real(a * a + b * b + c * c)));
-        }
-      }
-    }
-    return rest_density_ / (particle_mass_ * sum);
-  }
-
-  // The pressure force's gain on a full lattice at the spacing: -sum_j V_j W'(r)/r z_ij^2, the
-  // G with which sum_j V_j (p_j - p_i) grad W measures grad p. Still water's pressure p = k
-  // (rho - rho0) therefore stands at rho g / (w G) per metre, w G < 1.
-  Real lattice_gradient_gain(Real dx) const {
-    const int n = static_cast<int>(std::ceil(kernels_.h / dx));
-    Real sum = 0;
-    for (int a = -n; a <= n; ++a) {
-      for (int b = -n; b <= n; ++b) {
-        for (int c = (D == 3 ? -n : 0); c <= (D == 3 ? n : 0); ++c) {
-          const Real r = dx * std::sqrt(Real(a * a + b * b + c * c));
-          sum -= std::pow(dx, D) * kernels_.spiky_gradient_factor(r) * (dx * a) * (dx * a);
-        }
-      }
-    }
-    return sum;
-  }
-
   // The pressure a solid particle holds for fluid particle i, x_i - x_b = rib away: p_i continued
   // to it along the gradient of still water (Adami, Hu & Adams 2012, without the body's
   // acceleration), rho_i g / (w G). A zero gradient there (p_b = p_i) would press a face with the
@@ -607,7 +578,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // The pressure force -sum V_j w (p_i + p_j) grad W: w = 1 estimates grad p; Müller et al.'s
   // w = 1/2 estimates half of it, so that still water holds twice rho g h.
   Real pressure_weight_;
-  Real gradient_gain_;  // G of lattice_gradient_gain
+  Real gradient_gain_;  // G of lattice_sums.hpp
   Real damping_;        // alpha c0 h of the artificial viscosity [m^2/s]
   SolidContactSettings<D> settings_;
   SolidParticles<D> solids_;
