@@ -8,3 +8,12 @@
 #else
 #define SLUICE_HOST_DEVICE
 #endif
+
+// SLUICE_ONE_HOST_COPY marks a function whose answer the host's own path and the emulated device
+// run must share to the bit: compiled on its own, not into each caller's loop, where the
+// compiler may fuse its multiplies and adds into different FMAs. (The device's copy is its own.)
+#if defined(__CUDA_ARCH__)
+#define SLUICE_ONE_HOST_COPY
+#else
+#define SLUICE_ONE_HOST_COPY __attribute__((noinline))
+#endif

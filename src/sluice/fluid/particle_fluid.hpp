@@ -35,6 +35,7 @@ class ParticleFluid : public FluidSystem {
   ParticleState<D>& state() { return state_; }
   const ParticleState<D>& state() const { return state_; }
   const BodyPoints& body_points() const { return body_points_; }
+  std::size_t body_count() const { return body_count_; }
 
   // Called once after construction: the model's fields and what its first step needs.
   virtual void initialize() = 0;

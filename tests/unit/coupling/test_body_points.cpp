@@ -39,17 +39,25 @@ TEST(BodyPoints, MoveRigidly) {
 }
 
 TEST(BodyPoints, LoadsSumPerBodyWithTheirMoments) {
-  const BodyPoints points({{0, Vec3(0.1, 0, 0)}, {1, Vec3::Zero()}, {0, Vec3(-0.1, 0, 0)}});
+  const BodyPoints points({{0, Vec3(0.1, 0, 0)}, {0, Vec3(-0.1, 0, 0)}, {1, Vec3::Zero()}});
   std::vector<BodyKinematics> motion(2);
   motion[1].position = Vec3(5, 0, 0);
   // A couple on body 0 (no net force), a push on body 1 through its centre.
-  const std::vector<Vec3> force{Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(0, -1, 0)};
+  const std::vector<Vec3> force{Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(2, 0, 0)};
   const std::vector<Wrench> loads = points.loads(force, motion, 2);
   ASSERT_EQ(loads.size(), 2u);
   EXPECT_EQ(loads[0].force, Vec3::Zero());
   EXPECT_NEAR((loads[0].moment - Vec3(0, 0, 0.2)).norm(), 0, 1e-15);
   EXPECT_EQ(loads[1].force, Vec3(2, 0, 0));
   EXPECT_EQ(loads[1].moment, Vec3::Zero());
+}
+
+TEST(BodyPoints, FirstOfEachBodyGivesTheRunsOfPointsAndRefusesMixedOnes) {
+  // Body 1 has no points: it starts and ends where body 2 starts.
+  const BodyPoints points({{0, Vec3::Zero()}, {0, Vec3::Zero()}, {2, Vec3::Zero()}});
+  EXPECT_EQ(points.first_of_each_body(4), (std::vector<std::uint32_t>{0, 2, 2, 3, 3}));
+  const BodyPoints mixed({{0, Vec3::Zero()}, {1, Vec3::Zero()}, {0, Vec3::Zero()}});
+  EXPECT_THROW(mixed.first_of_each_body(2), std::logic_error);
 }
 
 }  // namespace

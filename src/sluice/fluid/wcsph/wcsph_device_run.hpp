@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sluice/core/types.hpp"
+#include "sluice/coupling/body_motion.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 
@@ -46,15 +47,17 @@ class WcsphDeviceRun {
   // The stages of a step, in the model's order.
   virtual void kick_drift(Real dt) = 0;
   virtual void sort_by_cell() = 0;
-  // The bodies' points moved: place their particles (3 reals per body point each).
-  virtual void set_body_motion(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
-                               const std::vector<Vec3>& acceleration) = 0;
+  // The bodies moved: `body_motion` holds each body's kinematics (pack_body_motion); the device
+  // places their points (rigid_point.hpp, the host's arithmetic) and their particles.
+  virtual void set_body_motion(const std::vector<Real>& body_motion) = 0;
   virtual void update_walls() = 0;
   virtual void compute_rates() = 0;
   virtual void kick(Real dt) = 0;
   virtual Extremes extremes() const = 0;
-  // The fluid's force on each body point from the last rates (3 reals per point).
-  virtual void body_point_forces(std::vector<Vec3>& force) const = 0;
+  // The fluid's force on each body and its moment about the body's `centre` (one per body),
+  // from the last rates: summed over the body's points on the device (point_wrench.hpp, the
+  // host's arithmetic), so that one transfer of 6 reals per body comes back.
+  virtual void body_loads(const std::vector<Vec3>& centre, std::vector<Wrench>& out) const = 0;
 
   // Whether a particle went wrong (particle_check.hpp); the host's copy then names it.
   virtual bool any_problem() const = 0;
@@ -72,6 +75,8 @@ struct WcsphDeviceSetup {
   CellGridView<D> cells;
   std::size_t cell_count = 0;
   std::size_t body_point_count = 0;
+  std::vector<std::uint32_t> body_first = {};  // BodyPoints::first_of_each_body (bodies + 1)
+  std::vector<Real> point_local = {};          // each body point's place in its body (3 reals)
   Real escape_min[D] = {}, escape_max[D] = {};
 };
 

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "sluice/coupling/point_wrench.hpp"
+#include "sluice/coupling/rigid_point.hpp"
 #include "sluice/fluid/particle_check.hpp"
 #include "sluice/fluid/wcsph/adami_walls.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
@@ -92,6 +94,33 @@ struct PlaceBodyPoint {
   }
 };
 
+// Body point k's place, velocity and acceleration from its body's kinematics.
+struct RigidPoint {
+  const Real* body_motion;
+  const std::uint32_t* body;
+  const Real* local;
+  Real *position, *velocity, *acceleration;
+  SLUICE_HOST_DEVICE void operator()(std::size_t k) const {
+    const Real* m = body_motion + kBodyMotionReals * body[k];
+    rigid_point_position(m, local + 3 * k, position + 3 * k);
+    rigid_point_velocity(m, local + 3 * k, velocity + 3 * k);
+    rigid_point_acceleration(m, local + 3 * k, acceleration + 3 * k);
+  }
+};
+
+// Body b's force and moment from its points' forces (point_wrench.hpp), 6 reals per body.
+struct BodyWrench {
+  const Real* point_position;
+  const Real* point_force;
+  const std::uint32_t* first;
+  const Real* centre;
+  Real* wrench;
+  SLUICE_HOST_DEVICE void operator()(std::size_t b) const {
+    sum_point_wrenches(point_position, point_force, first[b], first[b + 1], centre + 3 * b,
+                       wrench + 6 * b);
+  }
+};
+
 template <int D>
 struct FluidSpeed {
   WcsphFields<D> f;
@@ -128,6 +157,24 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     point_velocity_.resize(3 * setup.body_point_count);
     point_acceleration_.resize(3 * setup.body_point_count);
     point_force_.resize(3 * setup.body_point_count);
+    const std::size_t bodies = setup.body_first.empty() ? 0 : setup.body_first.size() - 1;
+    body_first_.resize(bodies + 1);
+    if (bodies > 0) body_first_.from_host(setup.body_first.data(), bodies + 1);
+    body_centre_.resize(3 * bodies);
+    body_motion_.resize(kBodyMotionReals * bodies);
+    point_local_.resize(3 * setup.body_point_count);
+    point_body_.resize(setup.body_point_count);
+    if (setup.body_point_count > 0) {
+      point_local_.from_host(setup.point_local.data(), 3 * setup.body_point_count);
+      std::vector<std::uint32_t> body(setup.body_point_count);
+      for (std::size_t b = 0; b < bodies; ++b) {
+        for (std::uint32_t k = setup.body_first[b]; k < setup.body_first[b + 1]; ++k) {
+          body[k] = static_cast<std::uint32_t>(b);
+        }
+      }
+      point_body_.from_host(body.data(), setup.body_point_count);
+    }
+    wrench_.resize(6 * bodies);
     std::uint32_t bits = 1;
     while ((std::size_t{1} << bits) <= setup.cell_count && bits < 32) ++bits;
     key_bits_ = static_cast<int>(bits);
@@ -181,6 +228,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     half_velocity_.to_host(host.half_velocity, D * n_);
     half_density_.to_host(host.half_density, n_);
     wall_velocity_.to_host(host.wall_velocity, D * n_);
+    point_acceleration_.to_host(const_cast<Real*>(host.body_point_acceleration),
+                                3 * setup_.body_point_count);
   }
 
   void kick_drift(Real dt) override {
@@ -207,13 +256,14 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
                       device_bodies::CellStart{key_.data(), n_, cell_start_.data()});
   }
 
-  void set_body_motion(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
-                       const std::vector<Vec3>& acceleration) override {
-    const std::size_t values = 3 * setup_.body_point_count;
-    if (values == 0) return;
-    point_position_.from_host(position.front().data(), values);
-    point_velocity_.from_host(velocity.front().data(), values);
-    point_acceleration_.from_host(acceleration.front().data(), values);
+  void set_body_motion(const std::vector<Real>& body_motion) override {
+    if (setup_.body_point_count == 0) return;
+    body_motion_.from_host(body_motion.data(), body_motion.size());
+    Backend::for_each(
+        setup_.body_point_count,
+        device_bodies::RigidPoint{body_motion_.data(), point_body_.data(), point_local_.data(),
+                                  point_position_.data(), point_velocity_.data(),
+                                  point_acceleration_.data()});
     Backend::for_each(n_, device_bodies::PlaceBodyPoint<D>{fields(), point_position_.data(),
                                                            point_velocity_.data()});
   }
@@ -241,10 +291,21 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     return e;
   }
 
-  void body_point_forces(std::vector<Vec3>& force) const override {
-    if (setup_.body_point_count == 0) return;
+  void body_loads(const std::vector<Vec3>& centre, std::vector<Wrench>& out) const override {
+    const std::size_t bodies = centre.size();
+    out.assign(bodies, Wrench{});
+    if (setup_.body_point_count == 0 || bodies == 0) return;
     Backend::for_each(n_, WcsphBodyPointForce<D, Kernel>{neighbourhood(), point_force_.data()});
-    point_force_.to_host(force.front().data(), 3 * setup_.body_point_count);
+    body_centre_.from_host(centre.front().data(), 3 * bodies);
+    Backend::for_each(
+        bodies, device_bodies::BodyWrench{point_position_.data(), point_force_.data(),
+                                          body_first_.data(), body_centre_.data(), wrench_.data()});
+    std::vector<Real> wrench(6 * bodies);
+    wrench_.to_host(wrench.data(), 6 * bodies);
+    for (std::size_t b = 0; b < bodies; ++b) {
+      out[b].force = Vec3(wrench[6 * b], wrench[6 * b + 1], wrench[6 * b + 2]);
+      out[b].moment = Vec3(wrench[6 * b + 3], wrench[6 * b + 4], wrench[6 * b + 5]);
+    }
   }
 
   bool any_problem() const override {
@@ -401,6 +462,9 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
       packed_fluid_, packed_viscous_weight_;
   Array<Real> point_position_, point_velocity_, point_acceleration_;
   mutable Array<Real> point_force_;
+  Array<std::uint32_t> body_first_, point_body_;
+  Array<Real> body_motion_, point_local_;
+  mutable Array<Real> body_centre_, wrench_;
   Array<Real> good_position_, good_velocity_, good_density_, good_pressure_;
   Array<std::int32_t> good_kind_, good_body_point_;
 };

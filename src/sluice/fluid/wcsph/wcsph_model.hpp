@@ -77,6 +77,7 @@ class WcsphModel final : public ParticleFluid<D> {
     if (device_ && a.reading()) {
       device_->upload(fields(this->state()));
       host_current_ = true;
+      points_placed_ = false;
     }
   }
 
@@ -107,19 +108,29 @@ class WcsphModel final : public ParticleFluid<D> {
     }));
   }
 
-  // On a device, the body points alone go there: a pass over the host's particles, whose copy
-  // is stale anyway, would cost a run of many millions of particles more than its step.
+  // On a device, the bodies' kinematics alone go there (19 reals a body), and the device places
+  // their points and particles: a pass over the host's particles, whose copy is stale anyway,
+  // would cost a run of many millions of particles more than its step.
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override {
     if (!device_) return Base::receive_body_motion(motion);
-    const BodyPoints& points = this->body_points();
-    std::vector<Vec3> position(points.size()), velocity(points.size());
-    auto& acceleration = this->state().body_point_acceleration;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      position[k] = points.position(k, motion);
-      velocity[k] = points.velocity(k, motion);
-      acceleration[k] = points.acceleration(k, motion);
+    on_device([&] { device_->set_body_motion(pack_body_motion(motion)); });
+    points_placed_ = true;
+  }
+
+  // On a device, the loads are summed there from the points where the last motion put them:
+  // one transfer of 6 reals per body.
+  std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
+    if (!device_) return Base::body_loads(motion);
+    if (!points_placed_) {  // the loads before the first exchange: placed where the host's are
+      device_->set_body_motion(pack_body_motion(motion));
+      host_current_ = false;
+      points_placed_ = true;
     }
-    on_device([&] { device_->set_body_motion(position, velocity, acceleration); });
+    std::vector<Vec3> centre(motion.size());
+    for (std::size_t b = 0; b < motion.size(); ++b) centre[b] = motion[b].position;
+    std::vector<Wrench> out;
+    device_->body_loads(centre, out);
+    return out;
   }
 
   std::optional<std::string> check(const StepClock& clock) const override {
@@ -179,7 +190,6 @@ class WcsphModel final : public ParticleFluid<D> {
   // neighbours i, from the very pair term that gives the fluid's acceleration (in double).
   void body_point_forces(const std::vector<BodyKinematics>&,
                          std::vector<Vec3>& force) const override {
-    if (device_) return device_->body_point_forces(force);
     const ParticleState<D>& s = this->state();
     exec::Default::for_each(s.particles.size(),
                             WcsphBodyPointForce<D, Kernel>{
@@ -193,6 +203,11 @@ class WcsphModel final : public ParticleFluid<D> {
     WcsphDeviceSetup<D, Kernel> setup{constants(s), s.cells.view(), s.cells.cell_count(),
                                       this->body_points().size()};
     setup.cells.cell_start = nullptr;
+    const BodyPoints& points = this->body_points();
+    setup.body_first = points.first_of_each_body(this->body_count());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      for (int a = 0; a < 3; ++a) setup.point_local.push_back(points[k].local[a]);
+    }
     for (int a = 0; a < D; ++a) {
       const int a3 = D == 3 ? a : 2 * a;
       setup.escape_min[a] = s.escape_box.min[a3];
@@ -201,6 +216,7 @@ class WcsphModel final : public ParticleFluid<D> {
     device_ = make_wcsph_device_run<D, Kernel>(p_.device, setup);
     device_->upload(fields(s));
     host_current_ = false;
+    points_placed_ = false;
   }
   template <class Work>
   void on_device(Work&& work) {
@@ -321,6 +337,7 @@ class WcsphModel final : public ParticleFluid<D> {
   // time of the last good state it keeps.
   std::unique_ptr<WcsphDeviceRun<D>> device_;
   mutable bool host_current_ = true;
+  mutable bool points_placed_ = false;  // whether the device knows where the body points stand
   double good_time_ = 0;
 };
 
