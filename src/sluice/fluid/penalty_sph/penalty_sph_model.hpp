@@ -187,12 +187,17 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
  private:
-  // The pressure a solid particle holds for fluid particle i, x_i - x_b = rib away: p_i continued
-  // to it along the gradient of still water (Adami, Hu & Adams 2012, without the body's
-  // acceleration), rho_i g / (w G). A zero gradient there (p_b = p_i) would press a face with the
-  // pressure half a spacing inside the water: +12 % on the lift of B5's parked wheels.
-  Real solid_pressure(Real p_i, Real rho_i, const Vec<D>& rib, const Vec<D>& gravity) const {
-    const Real p = p_i - rho_i / (pressure_weight_ * gradient_gain_) * gravity.dot(rib);
+  // The pressure solid particle b holds for fluid particle i, x_i - x_b = rib away: p_i continued
+  // to it along the gradient that holds the water still against b, rho_i (g - a_b) / (w G)
+  // (Adami, Hu & Adams 2012; a_b, a body point's acceleration, is zero for walls and layers). A
+  // zero gradient there (p_b = p_i) would press a face with the pressure half a spacing inside
+  // the water: +12 % on the lift of B5's parked wheels.
+  Real solid_pressure(std::size_t b, Real p_i, Real rho_i, const Vec<D>& rib) const {
+    const ParticleState<D>& s = this->state();
+    Vec<D> felt = s.gravity;
+    const std::int32_t point = s.particles.body_point[b];
+    if (point >= 0) felt -= from_3d<D>(s.body_point_acceleration[std::size_t(point)]);
+    const Real p = p_i - rho_i / (pressure_weight_ * gradient_gain_) * felt.dot(rib);
     return p_.keep_negative_pressure ? p : std::max<Real>(p, 0);
   }
 
@@ -486,7 +491,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
               // A solid particle holds the fluid's pressure continued to it, so that the
               // water's weight rests on the pressure at a wall as inside, not on the penalty
               // springs of its first row alone.
-              const Real p_j = solid_pressure(ps.pressure[i], rho_i, rij, s.gravity);
+              const Real p_j = solid_pressure(j, ps.pressure[i], rho_i, rij);
               pressure -= pressure_weight_ * std::pow(spacing[j], D) * (ps.pressure[i] + p_j) *
                           kernels_.spiky_gradient_factor(r) * rij;
               return;
@@ -535,7 +540,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
             if (!ps.is_fluid(i)) return;
             // minus the force on i: -(-V_i w V_b (p_i + p_b) grad W(x_i - x_b)), grad W along
             // -rbi
-            const Real p_b = solid_pressure(ps.pressure[i], ps.density[i], -rbi, s.gravity);
+            const Real p_b = solid_pressure(b, ps.pressure[i], ps.density[i], -rbi);
             sum -= ps.mass[i] / ps.density[i] * pressure_weight_ * std::pow(spacing[b], D) *
                    (ps.pressure[i] + p_b) * kernels_.spiky_gradient_factor(std::sqrt(r2)) * rbi;
           });
