@@ -27,13 +27,14 @@ template <int D>
 struct RunEnd {
   std::vector<Vec<D>> position, velocity;
   std::vector<Real> density, pressure;
+  std::vector<bool> fluid;
   std::vector<Vec3> body_position, fluid_force;
   long steps = 0;
 };
 
 template <int D>
-RunEnd<D> run_to(const std::string& file, std::vector<std::string> overrides, double end) {
-  Simulation<D> sim(testing::load_case(file, overrides));
+RunEnd<D> run_to(const io::CaseConfig& config, double end) {
+  Simulation<D> sim(config);
   RunEnd<D> out;
   testing::run_until(sim, end, [&](const StepClock&) { ++out.steps; });
   sim.fluid().frame();  // a reader of the particles: the device's copy comes back first
@@ -42,6 +43,7 @@ RunEnd<D> run_to(const std::string& file, std::vector<std::string> overrides, do
   out.velocity = ps.velocity;
   out.density = ps.density;
   out.pressure = ps.pressure;
+  for (std::size_t i = 0; i < ps.size(); ++i) out.fluid.push_back(ps.is_fluid(i));
   for (std::size_t b = 0; b < sim.bodies().count(); ++b) {
     out.body_position.push_back(sim.bodies().state(b).position);
     out.fluid_force.push_back(sim.coupler().fluid_force()[b]);
@@ -54,8 +56,8 @@ void expect_same_bits(const std::string& file, const std::vector<std::string>& o
                       double end) {
   std::vector<std::string> on_device = overrides;
   on_device.push_back("model.device=emulated");
-  const RunEnd<D> cpu = run_to<D>(file, overrides, end);
-  const RunEnd<D> device = run_to<D>(file, on_device, end);
+  const RunEnd<D> cpu = run_to<D>(testing::load_case(file, overrides), end);
+  const RunEnd<D> device = run_to<D>(testing::load_case(file, on_device), end);
   ASSERT_GT(cpu.steps, 10) << file;
   EXPECT_EQ(device.steps, cpu.steps) << file;
   ASSERT_EQ(device.position.size(), cpu.position.size()) << file;
@@ -76,6 +78,37 @@ TEST(WcsphDevice, EmulatedRunIsTheCpuRunBitForBit) {
   expect_same_bits<2>("floating_box_2d.yaml", {}, 0.3);
   // 3D, with five bodies on joints and wheels resting in the water.
   expect_same_bits<3>("fording.yaml", {}, 0.05);
+}
+
+// Water thrown at the floor at 6 m/s: the particles that reach the floor's layers are put back on
+// its surface, on the device as on the CPU (wall_surfaces.hpp), to the same bits.
+TEST(WcsphDevice, WaterThrownAtTheFloorIsKeptOutOfItOnTheDeviceToo) {
+  const std::string text =
+      "dimension: 2\nspacing: 0.02\ndomain: {min: [0, 0], max: [0.4, 0.4]}\nend_time: 1\n"
+      "output_interval: 0.1\nfluid:\n  blocks:\n"
+      "    - {min: [0, 0], max: [0.4, 0.1], velocity: [0, -6]}\n"
+      "walls:\n  - {type: tank, min: [0, 0], max: [0.4, 0.4], open: [z+]}\n";
+  const io::CaseConfig cpu_case = io::parse_case(text + "model: {name: wcsph}\n", "thrown.yaml");
+  const io::CaseConfig device_case =
+      io::parse_case(text + "model: {name: wcsph, device: emulated}\n", "thrown.yaml");
+  const RunEnd<2> cpu = run_to<2>(cpu_case, 0.01);
+  const RunEnd<2> device = run_to<2>(device_case, 0.01);
+  ASSERT_EQ(device.position.size(), cpu.position.size());
+  EXPECT_EQ(device.position, cpu.position);
+  EXPECT_EQ(device.velocity, cpu.velocity);
+  int below = 0, on_floor = 0;
+  for (std::size_t i = 0; i < device.position.size(); ++i) {
+    // Away from the corners, where a particle behind a side and the floor goes back through
+    // the one it is deeper behind.
+    const Real x = device.position[i][0];
+    if (!device.fluid[i] || x < 0.05 || x > 0.35) continue;
+    below += device.position[i][1] < 0;
+    on_floor += device.position[i][1] == 0;
+  }
+  std::printf("thrown at the floor: %d fluid particles on its surface, %d below it\n", on_floor,
+              below);
+  EXPECT_GT(on_floor, 0);  // the put-back happened
+  EXPECT_EQ(below, 0);
 }
 
 TEST(WcsphDevice, GpuRefusedWithTheReasonWhereNoneIsFound) {

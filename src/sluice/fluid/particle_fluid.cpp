@@ -41,8 +41,9 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
                                 const BodyGeometry& bodies)
     : radius_(interaction_radius),
       geometry_(&bodies),
-      wall_solids_(config.walls, D),
-      wall_band_(std::max(wall_layers(interaction_radius, config.spacing), 1) * config.spacing),
+      // Within the walls' particle layers, a fluid particle is put back on their surface.
+      wall_surfaces_(config.walls, D,
+                     std::max(wall_layers(interaction_radius, config.spacing), 1) * config.spacing),
       body_points_(config.has_fluid() ? bodies.points_under_surface(std::max(
                                             wall_layers(interaction_radius, config.spacing), 1))
                                       : bodies.surface_points()),
@@ -147,14 +148,10 @@ void ParticleFluid<D>::sort_by_cell() {
 template <int D>
 void ParticleFluid<D>::keep_out_of_walls() {
   auto& ps = state_.particles;
+  const WallSurfacesView walls = wall_surfaces_.view();
   exec::Default::for_each(ps.size(), [&](std::size_t i) {
-    if (!ps.is_fluid(i) || !wall_solids_.contains(to_3d<D>(ps.position[i]))) return;
-    const SurfacePoint p = geometry_->nearest_on_walls(to_3d<D>(ps.position[i]));
-    if (!(p.distance < 0) || p.distance < -wall_band_) return;
-    ps.position[i] = from_3d<D>(p.closest);
-    const Vec<D> normal = from_3d<D>(p.normal);
-    const Real inward = ps.velocity[i].dot(normal);
-    if (inward < 0) ps.velocity[i] -= inward * normal;
+    if (ps.is_fluid(i))
+      keep_out_of_wall_solids<D>(walls, ps.position[i].data(), ps.velocity[i].data());
   });
 }
 

@@ -13,7 +13,7 @@
 #include "sluice/coupling/body_points.hpp"
 #include "sluice/fluid/fluid_system.hpp"
 #include "sluice/fluid/particle_state.hpp"
-#include "sluice/fluid/wall_solids.hpp"
+#include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice {
@@ -36,6 +36,7 @@ class ParticleFluid : public FluidSystem {
   const ParticleState<D>& state() const { return state_; }
   const BodyPoints& body_points() const { return body_points_; }
   std::size_t body_count() const { return body_count_; }
+  const WallSurfaces& wall_surfaces() const { return wall_surfaces_; }
 
   // Called once after construction: the model's fields and what its first step needs.
   virtual void initialize() = 0;
@@ -96,8 +97,7 @@ class ParticleFluid : public FluidSystem {
 
   Real radius_;
   const BodyGeometry* geometry_;
-  WallSolids wall_solids_;
-  Real wall_band_;  // the walls' particle layers' thickness
+  WallSurfaces wall_surfaces_;
   ParticleState<D> state_;
   BodyPoints body_points_;
   std::size_t body_count_ = 0;

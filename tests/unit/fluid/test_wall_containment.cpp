@@ -1,16 +1,16 @@
-// Fluid particles are kept out of the walls' solids (fluid/wall_solids.hpp and the particle
+// Fluid particles are kept out of the walls' solids (fluid/wall_surfaces.hpp and the particle
 // base's neighbour stage): which points lie in a wall, and a particle pushed into the floor is
 // put back on its surface without its velocity into the floor.
 #include <gtest/gtest.h>
 
 #include "sluice/fluid/particle_fluid.hpp"
-#include "sluice/fluid/wall_solids.hpp"
+#include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/sim/simulation.hpp"
 
 namespace sluice {
 namespace {
 
-TEST(WallSolids, TankSidesBoxesAndPlanes) {
+TEST(WallSurfaces, TankSidesBoxesAndPlanesHaveTheirSolids) {
   const io::CaseConfig c = io::parse_case(
       "dimension: 3\nspacing: 0.1\ndomain: {min: [0, 0, 0], max: [2, 1, 2]}\nend_time: 1\n"
       "output_interval: 0.1\nfluid:\n  blocks:\n    - {min: [0, 0, 0], max: [0.5, 1, 0.5]}\n"
@@ -19,7 +19,7 @@ TEST(WallSolids, TankSidesBoxesAndPlanes) {
       "  - {type: plane, point: [0, 0, 0.05], normal: [0, 0, 1]}\n"
       "model: {name: wcsph}\n",
       "walls.yaml");
-  const WallSolids solids(c.walls, 3);
+  const WallSurfaces solids(c.walls, 3, 0.2);
   EXPECT_FALSE(solids.contains(Vec3(0.5, 0.5, 0.5)));
   EXPECT_TRUE(solids.contains(Vec3(-0.01, 0.5, 0.5)));  // behind x-
   EXPECT_FALSE(solids.contains(Vec3(2.5, 0.5, 0.5)));   // x+ is open
@@ -28,6 +28,36 @@ TEST(WallSolids, TankSidesBoxesAndPlanes) {
   EXPECT_TRUE(solids.contains(Vec3(1.1, 0.5, 0.2)));    // in the box
   EXPECT_FALSE(solids.contains(Vec3(1.1, 0.5, 0.35)));  // above it
   EXPECT_TRUE(solids.contains(Vec3(0.5, 0.5, 0.04)));   // under the plane
+}
+
+TEST(WallSurfaces, PutBackOnTheNearestFaceOfTheDeepestWallWithinTheBand) {
+  const io::CaseConfig c = io::parse_case(
+      "dimension: 3\nspacing: 0.1\ndomain: {min: [0, 0, 0], max: [2, 1, 2]}\nend_time: 1\n"
+      "output_interval: 0.1\nfluid:\n  blocks:\n    - {min: [0, 0, 0], max: [0.5, 1, 0.5]}\n"
+      "walls:\n  - {type: tank, min: [0, 0, 0], max: [2, 1, 1], open: [z+]}\n"
+      "  - {type: box, min: [1, 0, 0], max: [1.2, 1, 0.3]}\n"
+      "model: {name: wcsph}\n",
+      "walls.yaml");
+  const WallSurfaces walls(c.walls, 3, 0.2);
+  // 0.02 under the box's top, 0.08 from its left face: onto the top, the downward speed gone.
+  double x[3] = {1.08, 0.5, 0.28}, v[3] = {0.5, 0.1, -2.0};
+  keep_out_of_wall_solids<3>(walls.view(), x, v);
+  EXPECT_DOUBLE_EQ(x[0], 1.08);
+  EXPECT_DOUBLE_EQ(x[2], 0.3);
+  EXPECT_DOUBLE_EQ(v[0], 0.5);
+  EXPECT_DOUBLE_EQ(v[2], 0.0);
+  // In a corner, 0.05 behind the x- side and 0.01 under the floor: back through the side it is
+  // deeper behind; a velocity out of the wall is kept.
+  double y[3] = {-0.05, 0.5, -0.01}, w[3] = {1.0, 0, 0};
+  keep_out_of_wall_solids<3>(walls.view(), y, w);
+  EXPECT_DOUBLE_EQ(y[0], 0.0);
+  EXPECT_DOUBLE_EQ(y[2], -0.01);
+  EXPECT_DOUBLE_EQ(w[0], 1.0);
+  // Deeper than the walls' layers: left where it is.
+  double z[3] = {0.5, 0.5, -0.3}, u[3] = {0, 0, -1.0};
+  keep_out_of_wall_solids<3>(walls.view(), z, u);
+  EXPECT_DOUBLE_EQ(z[2], -0.3);
+  EXPECT_DOUBLE_EQ(u[2], -1.0);
 }
 
 TEST(WallContainment, AParticleInTheFloorIsPutBackOnItsSurface) {

@@ -14,6 +14,7 @@
 
 #include "sluice/core/types.hpp"
 #include "sluice/coupling/body_motion.hpp"
+#include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 
@@ -46,6 +47,7 @@ class WcsphDeviceRun {
 
   // The stages of a step, in the model's order.
   virtual void kick_drift(Real dt) = 0;
+  // Puts back fluid found in a wall's layers (wall_surfaces.hpp), then sorts by cell.
   virtual void sort_by_cell() = 0;
   // The bodies moved: `body_motion` holds each body's kinematics (pack_body_motion); the device
   // places their points (rigid_point.hpp, the host's arithmetic) and their particles.
@@ -77,6 +79,7 @@ struct WcsphDeviceSetup {
   std::size_t body_point_count = 0;
   std::vector<std::uint32_t> body_first = {};  // BodyPoints::first_of_each_body (bodies + 1)
   std::vector<Real> point_local = {};          // each body point's place in its body (3 reals)
+  WallSurfacesView walls = {};                 // on the host; the run copies its arrays
   Real escape_min[D] = {}, escape_max[D] = {};
 };
 

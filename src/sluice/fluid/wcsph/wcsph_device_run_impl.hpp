@@ -94,6 +94,17 @@ struct PlaceBodyPoint {
   }
 };
 
+// A fluid particle found in a wall's layers goes back on its surface.
+template <int D>
+struct KeepOutOfWalls {
+  WallSurfacesView walls;
+  const std::int32_t* kind;
+  Real *position, *velocity;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    if (kind[i] == 0) keep_out_of_wall_solids<D>(walls, position + D * i, velocity + D * i);
+  }
+};
+
 // Body point k's place, velocity and acceleration from its body's kinematics.
 struct RigidPoint {
   const Real* body_motion;
@@ -162,6 +173,13 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     if (bodies > 0) body_first_.from_host(setup.body_first.data(), bodies + 1);
     body_centre_.resize(3 * bodies);
     body_motion_.resize(kBodyMotionReals * bodies);
+    walls_ = setup.walls;
+    wall_plane_.resize(6 * walls_.planes);
+    wall_box_.resize(6 * walls_.boxes);
+    if (walls_.planes > 0) wall_plane_.from_host(setup.walls.plane, 6 * walls_.planes);
+    if (walls_.boxes > 0) wall_box_.from_host(setup.walls.box, 6 * walls_.boxes);
+    walls_.plane = wall_plane_.data();
+    walls_.box = wall_box_.data();
     point_local_.resize(3 * setup.body_point_count);
     point_body_.resize(setup.body_point_count);
     if (setup.body_point_count > 0) {
@@ -237,6 +255,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   void sort_by_cell() override {
+    Backend::for_each(n_, device_bodies::KeepOutOfWalls<D>{walls_, kind_.data(), position_.data(),
+                                                           velocity_.data()});
     Backend::for_each(
         n_, device_bodies::CellKey<D>{position_.data(), setup_.cells, key_.data(), order_.data()});
     Backend::sort_by_key(key_, order_, n_, key_bits_);
@@ -464,6 +484,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   mutable Array<Real> point_force_;
   Array<std::uint32_t> body_first_, point_body_;
   Array<Real> body_motion_, point_local_;
+  WallSurfacesView walls_;  // over wall_plane_ and wall_box_
+  Array<Real> wall_plane_, wall_box_;
   mutable Array<Real> body_centre_, wrench_;
   Array<Real> good_position_, good_velocity_, good_density_, good_pressure_;
   Array<std::int32_t> good_kind_, good_body_point_;

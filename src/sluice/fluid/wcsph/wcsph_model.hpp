@@ -205,6 +205,7 @@ class WcsphModel final : public ParticleFluid<D> {
     setup.cells.cell_start = nullptr;
     const BodyPoints& points = this->body_points();
     setup.body_first = points.first_of_each_body(this->body_count());
+    setup.walls = this->wall_surfaces().view();
     for (std::size_t k = 0; k < points.size(); ++k) {
       for (int a = 0; a < 3; ++a) setup.point_local.push_back(points[k].local[a]);
     }
