@@ -11,6 +11,7 @@
 
 #include "sluice/exec/host_device.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/io/wall_pieces.hpp"
 
 namespace sluice {
 
@@ -100,27 +101,14 @@ class WallSurfaces {
  public:
   WallSurfaces(const std::vector<io::WallConfig>& walls, int dimension, double band)
       : dimension_(dimension), band_(band) {
-    for (const io::WallConfig& wall : walls) {
-      switch (wall.shape) {
-        case io::WallShape::kTank:
-          for (int axis = 0; axis < 3; ++axis) {
-            if (dimension == 2 && axis == 1) continue;
-            for (const bool upper : {false, true}) {
-              if (wall.side_open(axis, upper)) continue;
-              Vec3 normal = Vec3::Zero();
-              normal[axis] = upper ? -1 : 1;
-              add(plane_, upper ? wall.box.max : wall.box.min, normal);
-            }
-          }
-          break;
-        case io::WallShape::kBox:
-          add(box_, 0.5 * (wall.box.min + wall.box.max), 0.5 * (wall.box.max - wall.box.min));
-          break;
-        case io::WallShape::kPlane:
-          add(plane_, wall.point, wall.normal);
-          break;
-      }
-    }
+    for_each_wall_piece(
+        walls, dimension,
+        [&](const io::WallConfig&, const Vec3& point, const Vec3& normal) {
+          add(plane_, point, normal);
+        },
+        [&](const io::WallConfig&, const Vec3& centre, const Vec3& half) {
+          add(box_, centre, half);
+        });
   }
 
   WallSurfacesView view() const {

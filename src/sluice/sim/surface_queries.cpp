@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "sluice/io/wall_pieces.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace sluice {
@@ -52,42 +53,22 @@ SurfacePoint RigidBodies::nearest_on_walls(const Vec3& x) const {
   SurfacePoint best;
   best.distance = std::numeric_limits<double>::infinity();
   best.closest = x;
-  const io::WallConfig* current = nullptr;
-  auto keep = [&](const SurfacePoint& p) {
+  auto keep = [&](const io::WallConfig& wall, const SurfacePoint& p) {
     if (p.distance < best.distance) {
       best = p;
-      best.velocity = current->surface_velocity;
+      best.velocity = wall.surface_velocity;
     }
   };
-  for (const io::WallConfig& wall : walls_) {
-    current = &wall;
-    switch (wall.shape) {
-      case io::WallShape::kTank:
-        // Each closed side is a plane whose solid lies outside the tank.
-        for (int axis = 0; axis < 3; ++axis) {
-          if (dimension_ == 2 && axis == 1) continue;
-          for (const bool upper : {false, true}) {
-            if (wall.side_open(axis, upper)) continue;
-            Vec3 normal = Vec3::Zero();
-            normal[axis] = upper ? -1 : 1;
-            keep(plane_surface(upper ? wall.box.max : wall.box.min, normal, x));
-          }
-        }
-        break;
-      case io::WallShape::kBox: {
-        const Vec3 centre = 0.5 * (wall.box.min + wall.box.max);
-        Vec3 half = 0.5 * (wall.box.max - wall.box.min);
-        if (dimension_ == 2) half[1] = std::numeric_limits<double>::infinity();
+  for_each_wall_piece(
+      walls_, dimension_,
+      [&](const io::WallConfig& wall, const Vec3& point, const Vec3& normal) {
+        keep(wall, plane_surface(point, normal, x));
+      },
+      [&](const io::WallConfig& wall, const Vec3& centre, const Vec3& half) {
         SurfacePoint p = box_surface(half, x - centre);
         p.closest += centre;
-        keep(p);
-        break;
-      }
-      case io::WallShape::kPlane:
-        keep(plane_surface(wall.point, wall.normal, x));
-        break;
-    }
-  }
+        keep(wall, p);
+      });
   return best;
 }
 

@@ -8,36 +8,21 @@
 
 #include "sluice/geometry/signed_distance.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/io/wall_pieces.hpp"
 
 namespace sluice {
 
 class SphereWalls {
  public:
   SphereWalls(const std::vector<io::WallConfig>& walls, int dimension) {
-    for (const io::WallConfig& w : walls) {
-      switch (w.shape) {
-        case io::WallShape::kTank:
-          for (int axis = 0; axis < 3; ++axis) {
-            if (dimension == 2 && axis == 1) continue;
-            for (const bool upper : {false, true}) {
-              if (w.side_open(axis, upper)) continue;
-              Vec3 normal = Vec3::Zero();
-              normal[axis] = upper ? -1 : 1;
-              surfaces_.push_back({true, upper ? w.box.max : w.box.min, normal, Vec3::Zero()});
-            }
-          }
-          break;
-        case io::WallShape::kBox: {
-          Vec3 half = 0.5 * (w.box.max - w.box.min);
-          if (dimension == 2) half[1] = std::numeric_limits<double>::infinity();
-          surfaces_.push_back({false, 0.5 * (w.box.min + w.box.max), Vec3::Zero(), half});
-          break;
-        }
-        case io::WallShape::kPlane:
-          surfaces_.push_back({true, w.point, w.normal, Vec3::Zero()});
-          break;
-      }
-    }
+    for_each_wall_piece(
+        walls, dimension,
+        [&](const io::WallConfig&, const Vec3& point, const Vec3& normal) {
+          surfaces_.push_back({true, point, normal, Vec3::Zero()});
+        },
+        [&](const io::WallConfig&, const Vec3& centre, const Vec3& half) {
+          surfaces_.push_back({false, centre, Vec3::Zero(), half});
+        });
   }
 
   std::size_t size() const { return surfaces_.size(); }
