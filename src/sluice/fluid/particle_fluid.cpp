@@ -40,7 +40,6 @@ template <int D>
 ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_radius,
                                 const BodyGeometry& bodies)
     : radius_(interaction_radius),
-      geometry_(&bodies),
       // Within the walls' particle layers, a fluid particle is put back on their surface.
       wall_surfaces_(config.walls, D,
                      std::max(wall_layers(interaction_radius, config.spacing), 1) * config.spacing),

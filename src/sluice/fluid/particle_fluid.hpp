@@ -96,7 +96,6 @@ class ParticleFluid : public FluidSystem {
   void keep_out_of_walls();
 
   Real radius_;
-  const BodyGeometry* geometry_;
   WallSurfaces wall_surfaces_;
   ParticleState<D> state_;
   BodyPoints body_points_;
