@@ -148,9 +148,11 @@ template <int D>
 void ParticleFluid<D>::keep_out_of_walls() {
   auto& ps = state_.particles;
   const WallSurfacesView walls = wall_surfaces_.view();
+  Vec<D>* carried = carried_velocity_ ? ps[*carried_velocity_].data() : nullptr;
   exec::Default::for_each(ps.size(), [&](std::size_t i) {
     if (ps.is_fluid(i))
-      keep_out_of_wall_solids<D>(walls, ps.position[i].data(), ps.velocity[i].data());
+      keep_out_of_wall_solids<D>(walls, ps.position[i].data(), ps.velocity[i].data(),
+                                 carried ? carried[i].data() : nullptr);
   });
 }
 

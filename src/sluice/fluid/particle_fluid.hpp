@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "sluice/coupling/body_geometry.hpp"
@@ -82,6 +83,11 @@ class ParticleFluid : public FluidSystem {
   // set by cell.
   virtual void sort_by_cell();
   io::PolyFrame frame_of(const ParticleSet<D>& particles) const;
+  // A model whose step goes on from a half-step velocity after the neighbour stage names it
+  // here, so that a particle put back on a wall loses its speed into the wall there too.
+  void carry_through_put_back(FieldHandle<Vec<D>> half_step_velocity) {
+    carried_velocity_ = half_step_velocity;
+  }
 
  private:
   // Whether a frame needs this field: those marked for output, the positions, and the body
@@ -101,6 +107,7 @@ class ParticleFluid : public FluidSystem {
   BodyPoints body_points_;
   std::size_t body_count_ = 0;
   std::vector<std::uint32_t> order_;  // scratch of the neighbour sort
+  std::optional<FieldHandle<Vec<D>>> carried_velocity_;
   ParticleSet<D> last_good_;
   double last_good_time_ = 0;
   bool holds_fields_ = false;

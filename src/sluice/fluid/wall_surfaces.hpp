@@ -42,10 +42,24 @@ SLUICE_HOST_DEVICE inline bool in_wall_solid(const WallSurfacesView& w, const do
   return false;
 }
 
+// Takes away the part of v (D reals) along -n, into the wall.
+template <int D>
+SLUICE_HOST_DEVICE inline void stop_into_wall(const double* n, double* v) {
+  double inward = 0;
+  for (int a = 0; a < D; ++a) inward += v[a] * n[a];
+  if (inward < 0) {
+    for (int a = 0; a < D; ++a) v[a] -= inward * n[a];
+  }
+}
+
 // Puts a fluid particle at x moving at v (D reals each) back on the wall's surface, as above.
+// `carried`, when given, is the velocity the rest of the model's step builds on (the half-step
+// velocity of a kick-drift-kick step, which the second kick turns into v): it loses its part
+// into the wall too, or the second kick would give the particle back its speed into the wall,
+// and a particle held on the wall by suction would gather speed step after step.
 template <int D>
 SLUICE_HOST_DEVICE SLUICE_ONE_HOST_COPY inline void keep_out_of_wall_solids(
-    const WallSurfacesView& w, double* x, double* v) {
+    const WallSurfacesView& w, double* x, double* v, double* carried = nullptr) {
   const double p[3] = {x[0], D == 3 ? x[1] : 0.0, x[D - 1]};
   if (!in_wall_solid(w, p)) return;
   double best = std::numeric_limits<double>::infinity();
@@ -84,16 +98,14 @@ SLUICE_HOST_DEVICE SLUICE_ONE_HOST_COPY inline void keep_out_of_wall_solids(
     }
   }
   if (!(best < 0) || best < -w.band) return;
-  double n[D], inward = 0;
+  double n[D];
   for (int a = 0; a < D; ++a) {
     const int a3 = D == 3 ? a : 2 * a;
     n[a] = normal[a3];
     x[a] = closest[a3];
-    inward += v[a] * n[a];
   }
-  if (inward < 0) {
-    for (int a = 0; a < D; ++a) v[a] -= inward * n[a];
-  }
+  stop_into_wall<D>(n, v);
+  if (carried) stop_into_wall<D>(n, carried);
 }
 
 // The arrays behind a view, from the case's walls.

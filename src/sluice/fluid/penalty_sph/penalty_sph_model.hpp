@@ -72,6 +72,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
     auto& ps = this->state().particles;
     acceleration_ = ps.add_vector_field({"acceleration", "m/s^2"});
     half_velocity_ = ps.add_vector_field({"half_step_velocity", "m/s"});
+    this->carry_through_put_back(half_velocity_);
     boundary_force_ = ps.add_vector_field({"boundary_force", "N", true});
     solid_spacing_ = ps.add_scalar_field({"solid_spacing", "m", true});
     layers_above_ = ps.add_int_field({"layers_above", "1"});

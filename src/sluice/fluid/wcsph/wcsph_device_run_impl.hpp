@@ -99,9 +99,11 @@ template <int D>
 struct KeepOutOfWalls {
   WallSurfacesView walls;
   const std::int32_t* kind;
-  Real *position, *velocity;
+  Real *position, *velocity, *half_velocity;
   SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
-    if (kind[i] == 0) keep_out_of_wall_solids<D>(walls, position + D * i, velocity + D * i);
+    if (kind[i] == 0) {
+      keep_out_of_wall_solids<D>(walls, position + D * i, velocity + D * i, half_velocity + D * i);
+    }
   }
 };
 
@@ -129,18 +131,6 @@ struct BodyWrench {
   SLUICE_HOST_DEVICE void operator()(std::size_t b) const {
     sum_point_wrenches(point_position, point_force, first[b], first[b + 1], centre + 3 * b,
                        wrench + 6 * b);
-  }
-};
-
-template <int D>
-struct FluidSpeed {
-  WcsphFields<D> f;
-  const Real* vector;  // velocity or acceleration
-  SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
-    if (!f.fluid(i)) return 0.0;
-    double sum = 0;
-    for (int a = 0; a < D; ++a) sum += vector[D * i + a] * vector[D * i + a];
-    return std::sqrt(sum);
   }
 };
 
@@ -255,8 +245,9 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   void sort_by_cell() override {
-    Backend::for_each(n_, device_bodies::KeepOutOfWalls<D>{walls_, kind_.data(), position_.data(),
-                                                           velocity_.data()});
+    Backend::for_each(n_,
+                      device_bodies::KeepOutOfWalls<D>{walls_, kind_.data(), position_.data(),
+                                                       velocity_.data(), half_velocity_.data()});
     Backend::for_each(
         n_, device_bodies::CellKey<D>{position_.data(), setup_.cells, key_.data(), order_.data()});
     Backend::sort_by_key(key_, order_, n_, key_bits_);
@@ -304,10 +295,9 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
 
   Extremes extremes() const override {
     Extremes e;
-    e.max_speed =
-        Backend::max_of(n_, device_bodies::FluidSpeed<D>{fields(), velocity_.data()}, scratch_);
+    e.max_speed = Backend::max_of(n_, FluidMagnitude<D>{fields(), velocity_.data()}, scratch_);
     e.max_acceleration =
-        Backend::max_of(n_, device_bodies::FluidSpeed<D>{fields(), acceleration_.data()}, scratch_);
+        Backend::max_of(n_, FluidMagnitude<D>{fields(), acceleration_.data()}, scratch_);
     return e;
   }
 

@@ -29,6 +29,20 @@ SLUICE_HOST_DEVICE inline void wcsph_second_half_kick(const WcsphFields<D>& f, s
   f.pressure[i] = eos.pressure(f.density[i]);
 }
 
+// The length of a fluid particle's velocity or acceleration (D reals a particle), zero for the
+// rest: the largest of them sets the time step, so host and device take it from one copy.
+template <int D>
+struct FluidMagnitude {
+  WcsphFields<D> f;
+  const Real* vector;
+  SLUICE_HOST_DEVICE SLUICE_ONE_HOST_COPY double operator()(std::size_t i) const {
+    if (!f.fluid(i)) return 0.0;
+    double sum = 0;
+    for (int a = 0; a < D; ++a) sum += vector[D * i + a] * vector[D * i + a];
+    return std::sqrt(sum);
+  }
+};
+
 // x, v and rho half a kick and a drift on (the first half of kick-drift-kick); velocity and
 // density are then predicted to the end of the step (a second half kick with the same rates)
 // for the force evaluation.

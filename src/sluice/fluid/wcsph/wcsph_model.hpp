@@ -57,6 +57,7 @@ class WcsphModel final : public ParticleFluid<D> {
     acceleration_ = ps.add_vector_field({"acceleration", "m/s^2"});
     density_rate_ = ps.add_scalar_field({"density_rate", "kg/m^3/s"});
     half_velocity_ = ps.add_vector_field({"half_step_velocity", "m/s"});
+    this->carry_through_put_back(half_velocity_);
     half_density_ = ps.add_scalar_field({"half_step_density", "kg/m^3"});
     // Walls: the velocity the viscous terms see (no-slip: mirrored about the wall's own).
     wall_velocity_ = ps.add_vector_field({"wall_velocity", "m/s"});
@@ -275,12 +276,10 @@ class WcsphModel final : public ParticleFluid<D> {
   }
 
   void measure_extremes(const ParticleState<D>& s) {
-    const auto& ps = s.particles;
-    const auto& a = ps[acceleration_];
-    max_speed_ = exec::Default::max_of(
-        ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? ps.velocity[i].norm() : 0.0; });
-    max_acceleration_ = exec::Default::max_of(
-        ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? a[i].norm() : 0.0; });
+    const WcsphFields<D> f = fields(s);
+    max_speed_ = exec::Default::max_of(s.particles.size(), FluidMagnitude<D>{f, f.velocity});
+    max_acceleration_ =
+        exec::Default::max_of(s.particles.size(), FluidMagnitude<D>{f, f.acceleration});
   }
 
   // Copies what the pair loops read into the packed single-precision arrays.
