@@ -28,7 +28,6 @@ template <int D>
 struct RunEnd {
   std::vector<Vec<D>> position, velocity;
   std::vector<Real> density, pressure;
-  std::vector<bool> fluid;
   std::vector<Vec3> body_position, fluid_force;
   long steps = 0;
 };
@@ -41,7 +40,7 @@ RunEnd<D> run_to(const io::CaseConfig& config, double end,
   testing::run_until(sim, end, [&](const StepClock&) {
     ++out.steps;
     if (!after_each_step) return;
-    sim.fluid().frame();  // as below
+    sim.fluid().frame();  // the device's copy comes back first, as below
     after_each_step(sim.state().particles);
   });
   sim.fluid().frame();  // a reader of the particles: the device's copy comes back first
@@ -50,7 +49,6 @@ RunEnd<D> run_to(const io::CaseConfig& config, double end,
   out.velocity = ps.velocity;
   out.density = ps.density;
   out.pressure = ps.pressure;
-  for (std::size_t i = 0; i < ps.size(); ++i) out.fluid.push_back(ps.is_fluid(i));
   for (std::size_t b = 0; b < sim.bodies().count(); ++b) {
     out.body_position.push_back(sim.bodies().state(b).position);
     out.fluid_force.push_back(sim.coupler().fluid_force()[b]);
