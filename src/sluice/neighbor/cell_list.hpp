@@ -1,12 +1,14 @@
-// Cell-linked-list neighbour search with cells as wide as the search radius. Particles are
-// sorted by cell (x fastest), so the three cells of a row along x are one contiguous index
-// range: a 3D query scans 9 ranges, a 2D query 3, and neighbours sit close in memory. (Cells
-// of half the radius scan 42 % less volume but cut the ranges into pieces too short for SIMD
-// loops: measured slower, docs/performance.md.)
+// Cell-linked-list neighbour search. Cells are as wide as the search radius across x and a
+// fraction of it along x; particles are sorted by cell (x fastest), so a row of cells along x
+// is one contiguous index range. A query scans the 9 rows around it (3 in 2D), each only over
+// the cells its sphere reaches: about half the volume of the 3x3x3 cube of whole cells, in long
+// enough ranges for SIMD loops. (Cells of half the radius on every axis scan less volume but cut
+// the ranges into pieces too short for SIMD: measured slower, docs/performance.md.)
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -21,20 +23,25 @@ namespace sluice {
 // first index of each cell, cells in the grid's order, with one more entry at the end.
 template <int D>
 struct CellGridView {
-  static constexpr int kReach = 1;  // cells scanned on each side of a particle's cell
+  static constexpr int kReach = 1;         // rows scanned on each side across x
+  static constexpr int kSlicesAlongX = 4;  // cells along x per search radius
   Real lo[D] = {};
-  Real inverse_cell_size = 0;
+  Real radius = 0;  // every particle within it of a query is among the query's candidates
+  Real cell_size[D] = {};
+  Real inverse_cell_size[D] = {};
   int counts[D] = {};  // including kReach padding cells on each side
   const std::uint32_t* cell_start = nullptr;
 
-  // The cell of a position, clamped to the interior so that all scanned cells exist.
+  // The cell of coordinate `value` along axis a, clamped to the interior so that all scanned
+  // cells exist.
+  SLUICE_HOST_DEVICE int axis_cell(int a, Real value) const {
+    const Real offset = (value - lo[a]) * inverse_cell_size[a];
+    const Real count = counts[a];
+    const int k = (offset < 0 ? 0 : static_cast<int>(offset < count ? offset : count)) + kReach;
+    return k < counts[a] - 1 - kReach ? k : counts[a] - 1 - kReach;
+  }
   SLUICE_HOST_DEVICE void cell_coords(const Real* x, int* c) const {
-    for (int a = 0; a < D; ++a) {
-      const Real offset = (x[a] - lo[a]) * inverse_cell_size;
-      const Real count = counts[a];
-      const int k = (offset < 0 ? 0 : static_cast<int>(offset < count ? offset : count)) + kReach;
-      c[a] = k < counts[a] - 1 - kReach ? k : counts[a] - 1 - kReach;
-    }
+    for (int a = 0; a < D; ++a) c[a] = axis_cell(a, x[a]);
   }
   SLUICE_HOST_DEVICE std::uint32_t linear(int x, int y, int z) const {
     return static_cast<std::uint32_t>(x + counts[0] * (y + counts[1] * z));
@@ -46,25 +53,57 @@ struct CellGridView {
     return D == 2 ? linear(c[0], c[D - 1], 0) : linear(c[0], c[1], c[D - 1]);
   }
 
-  // Calls fn(begin, end) for the contiguous index ranges that hold every particle within one
-  // cell of x (and some farther ones): the three cells of a row along x are one range.
-  template <class Fn>
+  // Calls fn(begin, end) for contiguous index ranges that hold every particle within `radius`
+  // of x (and some farther ones): along each row of cells next to x's, the cells from
+  // x - w to x + w, w the half chord of the search sphere at the row's nearest face. With
+  // kWidenTo > 1 each range is widened within its row to a multiple of kWidenTo particles where
+  // the row has them, for SIMD loops to which farther particles add exactly nothing.
+  template <int kWidenTo = 1, class Fn>
   SLUICE_HOST_DEVICE void for_each_candidate_range(const Real* x, Fn&& fn) const {
     int c[D];
     cell_coords(x, c);
+    // A margin for rounding, so that a particle at the radius is never lost to it.
+    const Real reach2 = radius * radius * Real(1.000001);
     if constexpr (D == 2) {
       for (int dz = -kReach; dz <= kReach; ++dz) {
-        const std::uint32_t row = linear(c[0], c[1] + dz, 0);
-        fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
+        scan_row<kWidenTo>(x[0], linear(0, c[1] + dz, 0), reach2 - gap2(1, c[1], dz, x[1]), fn);
       }
     } else {
       for (int dz = -kReach; dz <= kReach; ++dz) {
+        const Real across_z = gap2(2, c[2], dz, x[2]);
         for (int dy = -kReach; dy <= kReach; ++dy) {
-          const std::uint32_t row = linear(c[0], c[1] + dy, c[2] + dz);
-          fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
+          scan_row<kWidenTo>(x[0], linear(0, c[1] + dy, c[2] + dz),
+                             reach2 - across_z - gap2(1, c[1], dy, x[1]), fn);
         }
       }
     }
+  }
+
+ private:
+  // The squared distance along axis a from coordinate v in cell k to the cell `offset` away:
+  // zero for its own cell; from the face between them, which a particle clamped into a border
+  // cell lies beyond too.
+  SLUICE_HOST_DEVICE Real gap2(int a, int k, int offset, Real v) const {
+    if (offset == 0) return 0;
+    const Real face = lo[a] + (k - kReach + (offset > 0 ? offset : offset + 1)) * cell_size[a];
+    const Real gap = offset > 0 ? face - v : v - face;
+    return gap > 0 ? gap * gap : 0;
+  }
+  // The part of the row starting at index row_start within sqrt(chord2) of x along x.
+  template <int kWidenTo, class Fn>
+  SLUICE_HOST_DEVICE void scan_row(Real x, std::uint32_t row_start, Real chord2, Fn& fn) const {
+    if (chord2 <= 0) return;
+    const Real half = std::sqrt(chord2);
+    std::uint32_t begin = cell_start[row_start + axis_cell(0, x - half)];
+    std::uint32_t end = cell_start[row_start + axis_cell(0, x + half) + 1];
+    if constexpr (kWidenTo > 1) {
+      const std::uint32_t row_begin = cell_start[row_start];
+      const std::uint32_t row_end = cell_start[row_start + counts[0]];
+      const std::uint32_t wide = (end - begin + kWidenTo - 1) / kWidenTo * kWidenTo;
+      end = begin + wide < row_end ? begin + wide : row_end;
+      begin = end - row_begin > wide ? end - wide : row_begin;
+    }
+    fn(begin, end);
   }
 };
 
@@ -72,7 +111,7 @@ template <int D>
 class CellList {
  public:
   CellList() = default;
-  // Cells of edge `radius` cover [lo, hi]; positions outside are clamped to the border
+  // Cells of `radius` across x cover [lo, hi]; positions outside are clamped to the border
   // cells, so a stray particle is still found (the divergence guard reports it).
   CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius);
 
@@ -80,7 +119,7 @@ class CellList {
   // Call reorder on the particle set with it, then `positions` are sorted.
   void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order);
 
-  Real radius() const { return kReach * cell_size_; }
+  Real radius() const { return grid_.radius; }
   std::size_t cell_count() const { return cell_start_.size() - 1; }
   // The grid with the cells of the last sort.
   CellGridView<D> view() const {
@@ -90,7 +129,10 @@ class CellList {
   }
 
   // Checkpoints: the cells of the last sort (the particles have moved since).
-  void archive_state(StateArchive& a) { a(cell_start_); }
+  void archive_state(StateArchive& a) {
+    a.expect(cell_start_.size(), "neighbour cell count");
+    a(cell_start_);
+  }
 
   // Calls fn(j, r_ij, r2) for every particle j != i with |r_i - r_j|^2 < radius2
   // (r_ij = r_i - r_j). radius2 must not exceed radius()^2.
@@ -133,7 +175,6 @@ class CellList {
 
   static constexpr int kReach = CellGridView<D>::kReach;
   CellGridView<D> grid_;  // without its cell_start, which view() fills in
-  Real cell_size_ = 0;
   std::vector<std::uint32_t>
       cell_start_;                      // particles of cell c: [cell_start_[c], cell_start_[c+1])
   std::vector<std::uint32_t> cell_of_;  // scratch: cell of each particle before sorting

@@ -1,8 +1,10 @@
 // The cell-linked list finds exactly the pairs a brute-force search finds, including points
-// that lie on cell faces, and sorting keeps every particle.
+// that lie on cell faces or outside its grid, and sorting keeps every particle. Its candidate
+// ranges are clipped to the search sphere, and widened ranges never overlap or leave their row.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -11,14 +13,17 @@
 namespace sluice {
 namespace {
 
+// With `shrink` > 0 the grid covers only the middle of the points' box, so that some points and
+// some queries lie outside it.
 template <int D>
-void check_against_brute_force(std::vector<Vec<D>> points, Real radius) {
+void check_against_brute_force(std::vector<Vec<D>> points, Real radius, Real shrink = 0) {
   Vec<D> lo = Vec<D>::Constant(1e9), hi = Vec<D>::Constant(-1e9);
   for (const auto& p : points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  CellList<D> cells(lo, hi, radius);
+  const Vec<D> margin = shrink * (hi - lo);
+  CellList<D> cells(lo + margin, hi - margin, radius);
   std::vector<std::uint32_t> order;
   cells.sort(points, order);
   ASSERT_EQ(order.size(), points.size());
@@ -80,6 +85,13 @@ TEST(CellList, PointsOnCellFaces3D) {
   check_against_brute_force<3>(face_points<3>(0.1), 0.1);
 }
 
+TEST(CellList, PointsOutsideTheGridAreFoundToo2D) {
+  check_against_brute_force<2>(random_points<2>(2000, 4), 0.11, 0.3);
+}
+TEST(CellList, PointsOutsideTheGridAreFoundToo3D) {
+  check_against_brute_force<3>(random_points<3>(3000, 5), 0.23, 0.3);
+}
+
 TEST(CellList, PointsOutsideTheGridAreClampedNotLost) {
   std::vector<Vec<3>> points = random_points<3>(500, 3);
   points.push_back(Vec<3>(5.0, -4.0, 0.5));  // outside the grid built below
@@ -87,6 +99,70 @@ TEST(CellList, PointsOutsideTheGridAreClampedNotLost) {
   std::vector<std::uint32_t> order;
   cells.sort(points, order);
   EXPECT_EQ(std::set<std::uint32_t>(order.begin(), order.end()).size(), points.size());
+}
+
+// The candidate ranges of every point, widened to multiples of W, against the brute-force
+// neighbours: each neighbour is a candidate once, and a range's length is a multiple of W
+// unless it spans its whole row of cells.
+template <int W>
+void check_widened_ranges(const std::vector<Vec<3>>& points, Real radius) {
+  CellList<3> cells(Vec<3>::Zero(), Vec<3>::Ones(), radius);
+  std::vector<std::uint32_t> order;
+  cells.sort(points, order);
+  std::vector<Vec<3>> sorted(points.size());
+  for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = points[order[k]];
+  const CellGridView<3> grid = cells.view();
+  auto row_of = [&](std::size_t k) { return grid.cell_of(sorted[k].data()) / grid.counts[0]; };
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    std::vector<int> seen(sorted.size(), 0);
+    grid.for_each_candidate_range<W>(sorted[i].data(), [&](std::uint32_t begin, std::uint32_t end) {
+      if (begin == end) return;
+      EXPECT_EQ(row_of(begin), row_of(end - 1)) << "a range left its row";
+      const bool whole_row = (begin == 0 || row_of(begin - 1) != row_of(begin)) &&
+                             (end == sorted.size() || row_of(end) != row_of(end - 1));
+      EXPECT_TRUE((end - begin) % W == 0 || whole_row) << "range [" << begin << ", " << end << ")";
+      for (std::uint32_t j = begin; j < end; ++j) ++seen[j];
+    });
+    for (std::size_t j = 0; j < sorted.size(); ++j) {
+      ASSERT_LE(seen[j], 1) << "candidate " << j << " of " << i << " twice";
+      if ((sorted[i] - sorted[j]).squaredNorm() < radius * radius) {
+        ASSERT_EQ(seen[j], 1) << "neighbour " << j << " of " << i << " missed";
+      }
+    }
+  }
+}
+
+TEST(CellList, WidenedRangesKeepEveryNeighbourOnceAndStayInTheirRow) {
+  const auto points = random_points<3>(3000, 6);
+  check_widened_ranges<8>(points, 0.23);
+  check_widened_ranges<5>(points, 0.23);
+}
+
+// A query scans the cells its sphere reaches in each row, not the whole 3x3x3 cube of cells:
+// on a lattice, about half the cube's particles (the sphere itself holds 0.155 of it).
+TEST(CellList, CandidatesAreClippedToTheSearchSphere) {
+  const Real dx = 0.02, radius = 3 * dx;
+  std::vector<Vec<3>> points;
+  for (int i = 0; i < 50; ++i)
+    for (int j = 0; j < 50; ++j)
+      for (int k = 0; k < 50; ++k) points.emplace_back(i * dx + 0.01, j * dx + 0.01, k * dx + 0.01);
+  CellList<3> cells(Vec<3>::Zero(), Vec<3>::Ones(), radius);
+  std::vector<std::uint32_t> order;
+  cells.sort(points, order);
+  std::vector<Vec<3>> sorted(points.size());
+  for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = points[order[k]];
+  double candidates = 0, neighbours = 0, interior = 0;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    if ((sorted[i].array() < 0.2).any() || (sorted[i].array() > 0.8).any()) continue;
+    ++interior;
+    cells.for_each_candidate_range(
+        sorted[i], [&](std::uint32_t begin, std::uint32_t end) { candidates += end - begin; });
+    cells.for_each_neighbor(sorted, i, radius * radius,
+                            [&](std::size_t, const Vec<3>&, Real) { ++neighbours; });
+  }
+  const double cube = std::pow(3 * radius / dx, 3);  // the 27 whole cells' particles
+  EXPECT_LT(candidates / interior, 0.6 * cube);      // 0.556 here; the whole cube was 1
+  EXPECT_GT(candidates / interior, neighbours / interior);
 }
 
 }  // namespace
