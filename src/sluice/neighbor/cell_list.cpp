@@ -9,14 +9,13 @@ namespace sluice {
 
 template <int D>
 CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius) {
-  grid_.radius = radius;
+  grid_.cell_size = radius;
+  grid_.inverse_cell_size = 1 / radius;
   std::size_t total = 1;
   for (int a = 0; a < D; ++a) {
     grid_.lo[a] = lo[a];
-    grid_.cell_size[a] = a == 0 ? radius / CellGridView<D>::kSlicesAlongX : radius / kReach;
-    grid_.inverse_cell_size[a] = 1 / grid_.cell_size[a];
     grid_.counts[a] =
-        static_cast<int>(std::ceil((hi[a] - lo[a]) * grid_.inverse_cell_size[a])) + 1 + 2 * kReach;
+        static_cast<int>(std::ceil((hi[a] - lo[a]) * grid_.inverse_cell_size)) + 1 + 2 * kReach;
     total *= static_cast<std::size_t>(grid_.counts[a]);
   }
   if (total > (std::size_t{1} << 31)) {

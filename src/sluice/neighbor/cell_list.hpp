@@ -1,9 +1,10 @@
-// Cell-linked-list neighbour search. Cells are as wide as the search radius across x and a
-// fraction of it along x; particles are sorted by cell (x fastest), so a row of cells along x
-// is one contiguous index range. A query scans the 9 rows around it (3 in 2D), each only over
-// the cells its sphere reaches: about half the volume of the 3x3x3 cube of whole cells, in long
-// enough ranges for SIMD loops. (Cells of half the radius on every axis scan less volume but cut
-// the ranges into pieces too short for SIMD: measured slower, docs/performance.md.)
+// Cell-linked-list neighbour search with cells as wide as the search radius. Particles are
+// sorted by cell (x fastest), so a row of cells along x is one contiguous index range. A query
+// scans the 9 rows around its cell (3 in 2D): the three cells of each, or for the costliest
+// loops only those its search sphere reaches. (Cells of half the radius scan less volume
+// but cut the ranges into pieces too short for SIMD loops; cells a quarter of the radius long
+// along x scan less too, but sort every particle's neighbours by x, and with them F1's still
+// tank grew currents past its bar in one build: docs/performance.md.)
 #pragma once
 
 #include <algorithm>
@@ -23,19 +24,17 @@ namespace sluice {
 // first index of each cell, cells in the grid's order, with one more entry at the end.
 template <int D>
 struct CellGridView {
-  static constexpr int kReach = 1;         // rows scanned on each side across x
-  static constexpr int kSlicesAlongX = 4;  // cells along x per search radius
+  static constexpr int kReach = 1;  // cells scanned on each side of a particle's cell
   Real lo[D] = {};
-  Real radius = 0;  // every particle within it of a query is among the query's candidates
-  Real cell_size[D] = {};
-  Real inverse_cell_size[D] = {};
+  Real cell_size = 0;  // the search radius: every particle within it of a query is a candidate
+  Real inverse_cell_size = 0;
   int counts[D] = {};  // including kReach padding cells on each side
   const std::uint32_t* cell_start = nullptr;
 
   // The cell of coordinate `value` along axis a, clamped to the interior so that all scanned
   // cells exist.
   SLUICE_HOST_DEVICE int axis_cell(int a, Real value) const {
-    const Real offset = (value - lo[a]) * inverse_cell_size[a];
+    const Real offset = (value - lo[a]) * inverse_cell_size;
     const Real count = counts[a];
     const int k = (offset < 0 ? 0 : static_cast<int>(offset < count ? offset : count)) + kReach;
     return k < counts[a] - 1 - kReach ? k : counts[a] - 1 - kReach;
@@ -53,17 +52,39 @@ struct CellGridView {
     return D == 2 ? linear(c[0], c[D - 1], 0) : linear(c[0], c[1], c[D - 1]);
   }
 
-  // Calls fn(begin, end) for contiguous index ranges that hold every particle within `radius`
-  // of x (and some farther ones): along each row of cells next to x's, the cells from
-  // x - w to x + w, w the half chord of the search sphere at the row's nearest face. With
-  // kWidenTo > 1 each range is widened within its row to a multiple of kWidenTo particles where
-  // the row has them, for SIMD loops to which farther particles add exactly nothing.
-  template <int kWidenTo = 1, class Fn>
+  // Calls fn(begin, end) for the contiguous index ranges that hold every particle within a cell
+  // size of x (and some farther ones): the three cells of each row along x next to x's cell.
+  template <class Fn>
   SLUICE_HOST_DEVICE void for_each_candidate_range(const Real* x, Fn&& fn) const {
     int c[D];
     cell_coords(x, c);
+    if constexpr (D == 2) {
+      for (int dz = -kReach; dz <= kReach; ++dz) {
+        const std::uint32_t row = linear(c[0], c[1] + dz, 0);
+        fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
+      }
+    } else {
+      for (int dz = -kReach; dz <= kReach; ++dz) {
+        for (int dy = -kReach; dy <= kReach; ++dy) {
+          const std::uint32_t row = linear(c[0], c[1] + dy, c[2] + dz);
+          fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
+        }
+      }
+    }
+  }
+
+  // The same ranges clipped to the search sphere: along each row, only the cells from x - w to
+  // x + w, w the half chord of the sphere at the row's nearest face; rows it does not reach are
+  // skipped. That costs a square root a row, worth it only where every candidate costs much (the
+  // WCSPH pair loops; a scan that only tests distances was measured slower). With kWidenTo > 1
+  // each range is widened within its row to a multiple of kWidenTo particles where the row has
+  // them, for SIMD loops to which farther particles add exactly nothing.
+  template <int kWidenTo = 1, class Fn>
+  SLUICE_HOST_DEVICE void for_each_clipped_range(const Real* x, Fn&& fn) const {
+    int c[D];
+    cell_coords(x, c);
     // A margin for rounding, so that a particle at the radius is never lost to it.
-    const Real reach2 = radius * radius * Real(1.000001);
+    const Real reach2 = cell_size * cell_size * Real(1.000001);
     if constexpr (D == 2) {
       for (int dz = -kReach; dz <= kReach; ++dz) {
         scan_row<kWidenTo>(x[0], linear(0, c[1] + dz, 0), reach2 - gap2(1, c[1], dz, x[1]), fn);
@@ -85,7 +106,7 @@ struct CellGridView {
   // cell lies beyond too.
   SLUICE_HOST_DEVICE Real gap2(int a, int k, int offset, Real v) const {
     if (offset == 0) return 0;
-    const Real face = lo[a] + (k - kReach + (offset > 0 ? offset : offset + 1)) * cell_size[a];
+    const Real face = lo[a] + (k - kReach + (offset > 0 ? offset : offset + 1)) * cell_size;
     const Real gap = offset > 0 ? face - v : v - face;
     return gap > 0 ? gap * gap : 0;
   }
@@ -111,7 +132,7 @@ template <int D>
 class CellList {
  public:
   CellList() = default;
-  // Cells of `radius` across x cover [lo, hi]; positions outside are clamped to the border
+  // Cells of edge `radius` cover [lo, hi]; positions outside are clamped to the border
   // cells, so a stray particle is still found (the divergence guard reports it).
   CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius);
 
@@ -119,7 +140,7 @@ class CellList {
   // Call reorder on the particle set with it, then `positions` are sorted.
   void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order);
 
-  Real radius() const { return grid_.radius; }
+  Real radius() const { return grid_.cell_size; }
   std::size_t cell_count() const { return cell_start_.size() - 1; }
   // The grid with the cells of the last sort.
   CellGridView<D> view() const {
@@ -129,10 +150,7 @@ class CellList {
   }
 
   // Checkpoints: the cells of the last sort (the particles have moved since).
-  void archive_state(StateArchive& a) {
-    a.expect(cell_start_.size(), "neighbour cell count");
-    a(cell_start_);
-  }
+  void archive_state(StateArchive& a) { a(cell_start_); }
 
   // Calls fn(j, r_ij, r2) for every particle j != i with |r_i - r_j|^2 < radius2
   // (r_ij = r_i - r_j). radius2 must not exceed radius()^2.

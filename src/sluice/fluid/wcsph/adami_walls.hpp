@@ -68,7 +68,7 @@ struct AdamiWall {
     const auto& [f, packed, cells, c] = n;
     if (f.fluid(w)) return;
     AdamiWallSums sums;
-    cells.for_each_candidate_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
+    cells.for_each_clipped_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
       if (packed.has_fluid(begin, end)) add_adami_wall_sums(packed, c.kernel, w, begin, end, sums);
     });
     if (sums.weight > 0) {

@@ -17,9 +17,9 @@
 namespace sluice {
 
 // The rates' SIMD loop runs over whole vectors of 8 floats (AVX2): its candidate ranges are
-// widened to a multiple of 8, since the farther particles add nothing and a scalar remainder
-// of up to 7 candidates in each of 9 ranges took a fifth of its time. A GPU thread walks its
-// candidates one by one, so there they are not widened.
+// widened to a multiple of 8, since the farther particles add nothing and the scalar remainder
+// (up to 7 candidates in each of 9 ranges) is slower than one more vector. A GPU thread walks
+// its candidates one by one, so there they are not widened.
 #if defined(__CUDACC__)
 inline constexpr int kRatesRangeMultiple = 1;
 #else
@@ -126,7 +126,7 @@ struct WcsphRates {
     const float laminar_i = static_cast<float>(c.two_nu_rho0 / f.density[i]);
     const WcsphOwnParticle<float> own = own_particle(packed, i, laminar_i);
     double acc[3] = {0, 0, 0}, density = 0;
-    cells.template for_each_candidate_range<kRatesRangeMultiple>(
+    cells.template for_each_clipped_range<kRatesRangeMultiple>(
         f.position + D * i, [&](std::uint32_t begin, std::uint32_t end) {
           // A local copy of the view, as this loop has always read it: the compiler then splits the
           // SIMD sums the same way, and the results stay the same to the bit.
