@@ -58,19 +58,9 @@ struct CellGridView {
   SLUICE_HOST_DEVICE void for_each_candidate_range(const Real* x, Fn&& fn) const {
     int c[D];
     cell_coords(x, c);
-    if constexpr (D == 2) {
-      for (int dz = -kReach; dz <= kReach; ++dz) {
-        const std::uint32_t row = linear(c[0], c[1] + dz, 0);
-        fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
-      }
-    } else {
-      for (int dz = -kReach; dz <= kReach; ++dz) {
-        for (int dy = -kReach; dy <= kReach; ++dy) {
-          const std::uint32_t row = linear(c[0], c[1] + dy, c[2] + dz);
-          fn(cell_start[row - kReach], cell_start[row + kReach + 1]);
-        }
-      }
-    }
+    for_each_row(c, [&](std::uint32_t row_start, const int*) {
+      fn(cell_start[row_start + c[0] - kReach], cell_start[row_start + c[0] + kReach + 1]);
+    });
   }
 
   // The same ranges clipped to the search sphere: along each row, only the cells from x - w to
@@ -85,22 +75,30 @@ struct CellGridView {
     cell_coords(x, c);
     // A margin for rounding, so that a particle at the radius is never lost to it.
     const Real reach2 = cell_size * cell_size * Real(1.000001);
-    if constexpr (D == 2) {
-      for (int dz = -kReach; dz <= kReach; ++dz) {
-        scan_row<kWidenTo>(x[0], linear(0, c[1] + dz, 0), reach2 - gap2(1, c[1], dz, x[1]), fn);
-      }
-    } else {
-      for (int dz = -kReach; dz <= kReach; ++dz) {
-        const Real across_z = gap2(2, c[2], dz, x[2]);
+    for_each_row(c, [&](std::uint32_t row_start, const int* offset) {
+      Real chord2 = reach2;
+      for (int a = D - 1; a > 0; --a) chord2 -= gap2(a, c[a], offset[a], x[a]);
+      scan_row<kWidenTo>(x[0], row_start, chord2, fn);
+    });
+  }
+
+ private:
+  // Calls row(first cell of the row, offset) for the rows along x next to cell c: offset[a] is
+  // the row's offset from c along axis a > 0 (3 rows in 2D, 9 in 3D).
+  template <class RowFn>
+  SLUICE_HOST_DEVICE void for_each_row(const int* c, RowFn&& row) const {
+    for (int dz = -kReach; dz <= kReach; ++dz) {
+      if constexpr (D == 2) {
+        const int offset[2] = {0, dz};
+        row(linear(0, c[1] + dz, 0), offset);
+      } else {
         for (int dy = -kReach; dy <= kReach; ++dy) {
-          scan_row<kWidenTo>(x[0], linear(0, c[1] + dy, c[2] + dz),
-                             reach2 - across_z - gap2(1, c[1], dy, x[1]), fn);
+          const int offset[3] = {0, dy, dz};
+          row(linear(0, c[1] + dy, c[2] + dz), offset);
         }
       }
     }
   }
-
- private:
   // The squared distance along axis a from coordinate v in cell k to the cell `offset` away:
   // zero for its own cell; from the face between them, which a particle clamped into a border
   // cell lies beyond too.
