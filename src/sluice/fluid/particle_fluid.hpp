@@ -110,7 +110,6 @@ class ParticleFluid : public FluidSystem {
   std::optional<FieldHandle<Vec<D>>> carried_velocity_;
   ParticleSet<D> last_good_;
   double last_good_time_ = 0;
-  bool holds_fields_ = false;
 };
 
 }  // namespace sluice

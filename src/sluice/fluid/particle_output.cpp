@@ -97,15 +97,10 @@ std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const
                      particle_problem_text(problem_of(i)));
 }
 
-// What a frame shows, the model's fields marked for output included; the first time, a whole
-// copy that gives the set its fields.
+// What a frame shows, the model's fields marked for output included.
 template <int D>
 void ParticleFluid<D>::remember_good(double time) {
   refresh_host();
-  if (!holds_fields_) {
-    last_good_ = state_.particles;
-    holds_fields_ = true;
-  }
   last_good_.assign_fields(state_.particles, shown);
   last_good_time_ = time;
 }

@@ -74,10 +74,14 @@ class ParticleSet {
     visit_fields(*this, visit);
   }
 
-  // Copies from `from` (a set with the same fields: a copy of this one) the fields for which
-  // keep(label) holds, and empties the others.
+  // Makes this set hold the fields of `from`: the values of those for which keep(label) holds,
+  // the others empty, with their memory given back (the guard's last good state keeps only
+  // what a frame shows).
   template <class Keep>
   void assign_fields(const ParticleSet& from, Keep&& keep) {
+    take_labels(int_fields_, from.int_fields_);
+    take_labels(scalar_fields_, from.scalar_fields_);
+    take_labels(vector_fields_, from.vector_fields_);
     std::vector<const void*> sources;
     visit_fields(from, [&](const FieldLabel&, const auto& values) { sources.push_back(&values); });
     std::size_t k = 0;
@@ -86,7 +90,7 @@ class ParticleSet {
       if (keep(label)) {
         values = source;
       } else {
-        values.clear();
+        values = std::decay_t<decltype(values)>();
       }
     });
   }
@@ -122,6 +126,12 @@ class ParticleSet {
     FieldLabel label;
     std::vector<T> values;
   };
+
+  template <class T>
+  static void take_labels(std::vector<Field<T>>& to, const std::vector<Field<T>>& from) {
+    to.resize(from.size());
+    for (std::size_t k = 0; k < from.size(); ++k) to[k].label = from[k].label;
+  }
 
   template <class T>
   FieldHandle<T> add(std::vector<Field<T>>& fields, FieldLabel label) {

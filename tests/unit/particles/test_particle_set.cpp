@@ -87,7 +87,24 @@ TEST(ParticleSet, AssignFieldsCopiesWhatIsKeptAndEmptiesTheRest) {
   EXPECT_TRUE(to.mass.empty());
   to.for_each_field([&](const FieldLabel& label, const auto& values) {
     EXPECT_EQ(values.size(), label.output ? from.size() : 0u) << label.name;
+    if (!label.output) {
+      EXPECT_EQ(values.capacity(), 0u) << label.name << ": memory not given back";
+    }
   });
+}
+
+TEST(ParticleSet, AssignFieldsGivesAnEmptySetTheSameFields) {
+  const ParticleSet<3> from = tagged_set();
+  ParticleSet<3> to;
+  to.assign_fields(from, [](const FieldLabel& label) { return label.name != "mass"; });
+  std::vector<std::string> names, from_names;
+  to.for_each_field([&](const FieldLabel& label, const auto& values) {
+    names.push_back(label.name);
+    EXPECT_EQ(values.size(), label.name == "mass" ? 0u : from.size()) << label.name;
+  });
+  from.for_each_field(
+      [&](const FieldLabel& label, const auto&) { from_names.push_back(label.name); });
+  EXPECT_EQ(names, from_names);
 }
 
 }  // namespace
