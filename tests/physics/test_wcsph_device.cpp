@@ -85,6 +85,12 @@ TEST(WcsphDevice, EmulatedRunIsTheCpuRunBitForBit) {
   expect_same_bits<3>("fording.yaml", {}, 0.05);
 }
 
+// Waiting for the device at the end of every stage, for the stages' times, changes no answer
+// (and the key is accepted, with no effect, on the CPU too).
+TEST(WcsphDevice, TimedStagesGiveTheSameAnswer) {
+  expect_same_bits<2>("dam_break_2d.yaml", {"spacing=0.05", "model.time_device_stages=true"}, 0.1);
+}
+
 // Water thrown at the floor at 6 m/s: the particles that reach the floor's layers are put back on
 // its surface, on the device as on the CPU (wall_surfaces.hpp), to the same bits.
 TEST(WcsphDevice, WaterThrownAtTheFloorIsKeptOutOfItOnTheDeviceToo) {

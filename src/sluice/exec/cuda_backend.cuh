@@ -43,6 +43,8 @@ struct CudaBackend {
     return std::string(properties.name) + " (CUDA)";
   }
 
+  static void finish() { cuda_check(cudaDeviceSynchronize(), "waiting for the GPU"); }
+
   // n values of T in device memory; copies to and from the host are synchronous.
   template <class T>
   class Array {

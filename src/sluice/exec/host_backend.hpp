@@ -17,6 +17,7 @@ namespace sluice::exec {
 
 struct HostBackend {
   static std::string name() { return "emulated (host threads)"; }
+  static void finish() {}  // every loop and copy is done when its call returns
 
   template <class T>
   class Array {

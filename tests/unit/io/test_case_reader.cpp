@@ -101,6 +101,8 @@ TEST(CaseReader, MinimalCaseGetsTheDocumentedDefaults) {
   EXPECT_DOUBLE_EQ(p.cfl, 0.2);
   EXPECT_DOUBLE_EQ(p.force_cfl, 0.25);
   EXPECT_TRUE(p.no_slip);
+  EXPECT_EQ(p.device, WcsphDevice::kCpu);
+  EXPECT_FALSE(p.time_device_stages);
 }
 
 TEST(CaseReader, WallAndProbeDefaults) {

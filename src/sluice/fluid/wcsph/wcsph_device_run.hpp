@@ -61,6 +61,10 @@ class WcsphDeviceRun {
   // host's arithmetic), so that one transfer of 6 reals per body comes back.
   virtual void body_loads(const std::vector<Vec3>& centre, std::vector<Wrench>& out) const = 0;
 
+  // Returns once the device has done all the work asked of it so far, for timing each stage
+  // on its own (a GPU runs the loops while the host goes on).
+  virtual void finish() const = 0;
+
   // Whether a particle went wrong (particle_check.hpp); the host's copy then names it.
   virtual bool any_problem() const = 0;
   // Keeps the present state as the last good one (on the device), and copies it back.

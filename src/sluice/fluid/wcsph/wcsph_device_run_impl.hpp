@@ -5,6 +5,7 @@
 //   Backend::max_of(n, value, scratch)  the largest value(i)
 //   Backend::sort_by_key(keys, values, n, bits)   stable, by the keys' lowest `bits` bits
 //   Backend::inclusive_scan(in, out, n)           out[k] = in[0] + ... + in[k]
+//   Backend::finish()             returns once every loop and copy asked for is done
 //   Backend::name()
 // Included by wcsph_device_host.cpp (the host's threads) and wcsph_device_cuda.cu (CUDA), so
 // everything here compiles under both; the physics is the loop bodies', not this file's.
@@ -317,6 +318,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
       out[b].moment = Vec3(wrench[6 * b + 3], wrench[6 * b + 4], wrench[6 * b + 5]);
     }
   }
+
+  void finish() const override { Backend::finish(); }
 
   bool any_problem() const override {
     return Backend::max_of(n_, device_bodies::BadParticle<D>{checker()}, scratch_) > 0;

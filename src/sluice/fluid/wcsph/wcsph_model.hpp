@@ -143,6 +143,7 @@ class WcsphModel final : public ParticleFluid<D> {
   void remember_good(double time) override {
     if (!device_) return Base::remember_good(time);
     device_->remember();
+    finish_stage_on_device();
     good_time_ = time;
   }
   io::FluidFrame last_good_frame() const override {
@@ -223,7 +224,13 @@ class WcsphModel final : public ParticleFluid<D> {
   template <class Work>
   void on_device(Work&& work) {
     work();
+    finish_stage_on_device();
     host_current_ = false;
+  }
+  // With model.time_device_stages, a stage's time is its own work's: the device's loops run
+  // while the host goes on, so otherwise the next wait (a copy back) counts them.
+  void finish_stage_on_device() const {
+    if (p_.time_device_stages) device_->finish();
   }
 
   // The host's particle set as the loop bodies see it.

@@ -52,6 +52,7 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
   if (p.device != WcsphDevice::kCpu && p.boundary != "adami") {
     model.fail("device", "the device runs the adami boundary treatment only");
   }
+  p.time_device_stages = model.optional<bool>("time_device_stages", p.time_device_stages);
   model.finish();
 
   if (p.sound_speed == 0) {

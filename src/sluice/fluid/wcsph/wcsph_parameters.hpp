@@ -25,6 +25,7 @@ struct WcsphParameters {
   bool no_slip = true;                     // walls: no-slip (true) or free-slip
   std::string boundary = "adami";          // the boundary treatment, by name (wcsph_boundaries)
   WcsphDevice device = WcsphDevice::kCpu;  // where the particles live and the loops run
+  bool time_device_stages = false;         // wait for the device at the end of every stage
 
   double smoothing_length(double dx) const { return h_over_dx * dx; }
 };
