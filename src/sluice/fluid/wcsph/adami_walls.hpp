@@ -68,9 +68,18 @@ struct AdamiWall {
     const auto& [f, packed, cells, c] = n;
     if (f.fluid(w)) return;
     AdamiWallSums sums;
-    cells.for_each_clipped_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
-      if (packed.has_fluid(begin, end)) add_adami_wall_sums(packed, c.kernel, w, begin, end, sums);
+    // Most wall particles have no fluid in the cells around them: a look at the whole rows
+    // (no square roots) skips them before the clipped ranges are worked out.
+    bool wet = false;
+    cells.for_each_candidate_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
+      wet = wet || packed.has_fluid(begin, end);
     });
+    if (wet) {
+      cells.for_each_clipped_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
+        if (packed.has_fluid(begin, end))
+          add_adami_wall_sums(packed, c.kernel, w, begin, end, sums);
+      });
+    }
     if (sums.weight > 0) {
       Real g_wall[3] = {c.gravity[0], c.gravity[1], c.gravity[2]};
       if (f.body_point[w] >= 0) {
