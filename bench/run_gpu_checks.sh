@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # On a machine with an NVIDIA GPU, from the repository root, with gpu_bundle/ from
 # bench/gpu_bundle.sh: the GPU checks (tests/physics/test_wcsph_device.cpp) and the GPU
-# benchmark (docs/performance.md). Writes seven files to $OUT (the device tool's) or out/gpu:
+# benchmark (docs/performance.md). Writes eight files to $OUT (the device tool's) or out/gpu:
 #   log.txt          the GPU, the checks' and the runs' output, the GPU memory in use;
 #   checks.xml       the GPU checks' results (GoogleTest's XML);
 #   bench_gpu.json   the bench case (cases/bench_dam_break_3d.yaml, 128,310 fluid particles)
 #                    for 0.1 s on the GPU;
+#   bench_gpu_h173.json  the same at DualSPHysics's smoothing length, h = sqrt(3) dx (its
+#                    examples' coefh = 1; sluice's default is 1.5 dx);
 #   bench_gpu_stages.json  the same for 0.02 s, waiting for the GPU at the end of every stage
 #                    (model.time_device_stages): where the time goes;
 #   bench_cpu.json   the same for 0.025 s on all the CPU's threads;
@@ -34,6 +36,10 @@ run gpu_bundle/physics_tests --gtest_filter='WcsphGpu.*:WcsphDevice.*' \
 echo "== bench case, GPU, 0.1 s"
 run gpu_bundle/sluice run cases/bench_dam_break_3d.yaml --device gpu --end 0.1 \
   --set output_interval=0.05 --out /tmp/bench_gpu --stats "$out/bench_gpu.json" | tail -n 12
+echo "== bench case, GPU, 0.1 s, at h = sqrt(3) dx"
+run gpu_bundle/sluice run cases/bench_dam_break_3d.yaml --device gpu --end 0.1 \
+  --set output_interval=0.05 --set model.h_over_dx=1.7320508 --out /tmp/bench_gpu_h173 \
+  --stats "$out/bench_gpu_h173.json" | tail -n 12
 echo "== bench case, GPU, 0.02 s, each stage waited for"
 run gpu_bundle/sluice run cases/bench_dam_break_3d.yaml --device gpu --end 0.02 \
   --set output_interval=0.02 --set model.time_device_stages=true --out /tmp/bench_gpu_stages \
