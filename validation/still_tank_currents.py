@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""F1's still tank with wcsph, watched over its 2 s: the fluid's kinetic energy for the default
+model and for variants (a longer smoothing length, more artificial viscosity, half the spacing,
+a quarter of the time step), and the velocities of the default run when its currents are
+strongest. Writes docs/img/f1_still_tank_currents.png and prints each run's kinetic energy.
+
+usage: /usr/bin/python3 validation/still_tank_currents.py [--no-run]
+"""
+import os
+import xml.etree.ElementTree as ET
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from runs import case_parser, require, run_case, save_figure
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+VARIANTS = [
+    ("default (h = 1.5 dx, alpha = 0.02, dx = 0.025 m)", []),
+    ("time step / 4 (cfl 0.05)", ["model.cfl=0.05"]),
+    ("h = 2 dx", ["model.h_over_dx=2"]),
+    ("alpha = 0.05", ["model.artificial_viscosity=0.05"]),
+    ("alpha = 0.1", ["model.artificial_viscosity=0.1"]),
+    ("dx = 0.0125 m", ["spacing=0.0125"]),
+]
+
+
+def kinetic_energy(out):
+    path = os.path.join(out, "energy.csv")
+    require(path)
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    return data["time"], data["fluid_kinetic"]
+
+
+def frame_at(out, time):
+    """The fluid's positions (x, z) and velocities of the frame nearest `time`."""
+    series = ET.parse(os.path.join(out, "hydrostatic_2d.pvd")).getroot().iter("DataSet")
+    nearest = min(series, key=lambda d: abs(float(d.get("timestep")) - time))
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(os.path.join(out, nearest.get("file")))
+    reader.Update()
+    data = reader.GetOutput()
+    x = vtk_to_numpy(data.GetPoints().GetData())
+    v = vtk_to_numpy(data.GetPointData().GetArray("velocity"))
+    fluid = vtk_to_numpy(data.GetPointData().GetArray("kind")) == 0
+    return float(nearest.get("timestep")), x[fluid][:, [0, 2]], v[fluid][:, [0, 2]]
+
+
+def main():
+    args = case_parser("still_tank_currents", __doc__).parse_args()
+    fig, (energy, field) = plt.subplots(1, 2, figsize=(11, 4.4))
+    first = None
+    for k, (label, overrides) in enumerate(VARIANTS):
+        out = run_case("hydrostatic_2d", args, overrides, suffix=f"_{k}")
+        first = first or out
+        t, ke = kinetic_energy(out)
+        energy.semilogy(t, np.maximum(ke, 1e-7), label=label)
+        print(f"{label}: fluid kinetic energy at 0.5, 1.0, 1.5, 2.0 s: " + ", ".join(
+            f"{np.interp(s, t, ke):.2e} J" for s in (0.5, 1.0, 1.5, 2.0)))
+    energy.set_xlabel("t (s)")
+    energy.set_ylabel("fluid kinetic energy (J), 1000 kg of water")
+    energy.set_title("F1 still tank (wcsph): kinetic energy")
+    energy.legend(fontsize=7)
+    energy.grid(True, which="both", alpha=0.3)
+
+    time, x, v = frame_at(first, 1.5)
+    speed = np.linalg.norm(v, axis=1)
+    print(f"default run at t = {time:.2f} s: largest speed {speed.max():.4f} m/s, "
+          f"rms {np.sqrt((speed ** 2).mean()):.4f} m/s")
+    arrows = field.quiver(x[:, 0], x[:, 1], v[:, 0], v[:, 1], speed, cmap="viridis",
+                          scale=0.6, width=0.003)
+    fig.colorbar(arrows, ax=field, label="speed (m/s)")
+    field.set_aspect("equal")
+    field.set_xlim(0, 1)
+    field.set_ylim(0, 1.05)
+    field.set_xlabel("x (m)")
+    field.set_ylabel("z (m)")
+    field.set_title(f"default run, velocities at t = {time:.1f} s")
+    save_figure(fig, "f1_still_tank_currents.png")
+
+
+if __name__ == "__main__":
+    main()
