@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """F1's still tank with wcsph, watched over its 2 s: the fluid's kinetic energy for the default
 model and for variants (a longer smoothing length, more artificial viscosity, half the spacing,
-a quarter of the time step), and the velocities of the default run when its currents are
-strongest. Writes docs/img/f1_still_tank_currents.png and prints each run's kinetic energy.
+a quarter of the time step), the velocities of the default run when its currents are strongest,
+and the kinetic energy of a 3D tank (written out by this script) at h = 1.5 and 2 dx. Writes
+docs/img/f1_still_tank_currents.png and prints each run's kinetic energy.
 
 usage: /usr/bin/python3 validation/still_tank_currents.py [--no-run]
 """
 import os
+import subprocess
 import xml.etree.ElementTree as ET
 
 import matplotlib
@@ -14,7 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-from runs import case_parser, require, run_case, save_figure
+from runs import ROOT, case_parser, require, run_case, save_figure
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
@@ -26,6 +28,36 @@ VARIANTS = [
     ("alpha = 0.1", ["model.artificial_viscosity=0.1"]),
     ("dx = 0.0125 m", ["spacing=0.0125"]),
 ]
+
+
+# A 3D tank 0.5 x 0.25 m with water 0.5 m deep, at F1's spacing (4,000 fluid particles).
+TANK_3D = """name: still_tank_3d
+dimension: 3
+spacing: 0.025
+domain: {min: [0, 0, 0], max: [0.5, 0.25, 0.6]}
+end_time: 3.0
+output_interval: 0.5
+fluid:
+  blocks:
+    - {name: water, min: [0, 0, 0], max: [0.5, 0.25, 0.5]}
+walls:
+  - {type: tank, min: [0, 0, 0], max: [0.5, 0.25, 0.6], open: [z+]}
+model:
+  name: wcsph
+"""
+
+
+def run_tank_3d(args, h_over_dx):
+    out = os.path.join(ROOT, args.out + f"_3d_h{h_over_dx}")
+    if not args.no_run:
+        os.makedirs(out, exist_ok=True)
+        case = os.path.join(out, "still_tank_3d.yaml")
+        with open(case, "w") as f:
+            f.write(TANK_3D)
+        subprocess.run([os.path.join(ROOT, args.sluice), "run", case, "--out", out, "--set",
+                        f"model.h_over_dx={h_over_dx}"], cwd=ROOT, check=True,
+                       stdout=subprocess.DEVNULL)
+    return out
 
 
 def kinetic_energy(out):
@@ -51,7 +83,7 @@ def frame_at(out, time):
 
 def main():
     args = case_parser("still_tank_currents", __doc__).parse_args()
-    fig, (energy, field) = plt.subplots(1, 2, figsize=(11, 4.4))
+    fig, (energy, field, energy_3d) = plt.subplots(1, 3, figsize=(16, 4.4))
     first = None
     for k, (label, overrides) in enumerate(VARIANTS):
         out = run_case("hydrostatic_2d", args, overrides, suffix=f"_{k}")
@@ -79,6 +111,17 @@ def main():
     field.set_xlabel("x (m)")
     field.set_ylabel("z (m)")
     field.set_title(f"default run, velocities at t = {time:.1f} s")
+
+    for h_over_dx in (1.5, 2):
+        t, ke = kinetic_energy(run_tank_3d(args, h_over_dx))
+        energy_3d.semilogy(t, np.maximum(ke, 1e-8), label=f"h = {h_over_dx} dx")
+        print(f"3D tank, h = {h_over_dx} dx: fluid kinetic energy at 1, 2, 2.5, 3 s: " + ", ".join(
+            f"{np.interp(s, t, ke):.2e} J" for s in (1.0, 2.0, 2.5, 3.0)))
+    energy_3d.set_xlabel("t (s)")
+    energy_3d.set_ylabel("fluid kinetic energy (J), 62.5 kg of water")
+    energy_3d.set_title("3D tank 0.5 x 0.25 m, 0.5 m deep, dx = 0.025 m")
+    energy_3d.legend(fontsize=7)
+    energy_3d.grid(True, which="both", alpha=0.3)
     save_figure(fig, "f1_still_tank_currents.png")
 
 
