@@ -59,3 +59,13 @@ for spacing in 0.0042 0.0028; do
   kill $sampler
   [ $status -eq 0 ] || { echo "spacing $spacing: did not run"; break; }
 done
+
+echo "== summary: wall seconds per simulated second (DualSPHysics on an H100: 14.1)"
+python3 - "$out"/*.json <<'PY'
+import json, os, sys
+for path in sys.argv[1:]:
+    s = json.load(open(path))
+    print(f"{os.path.basename(path)}: {s['particles']} particles, {s['steps']} steps, "
+          f"{s['wall_seconds']:.2f} s, {s['wall_seconds_per_simulated_second']:.1f} s per "
+          f"simulated s, {s['particle_steps_per_second'] / 1e6:.1f} M particle-steps/s")
+PY
