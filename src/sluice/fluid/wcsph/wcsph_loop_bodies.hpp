@@ -161,9 +161,15 @@ struct WcsphBodyPointForce {
     const std::int32_t k = f.body_point[w];
     if (k < 0) return;
     double sum[3] = {0, 0, 0};
-    cells.for_each_candidate_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
+    // Beyond the kernel's support (2h, with a margin for the float kernel's rounding) a fluid
+    // particle's term is exactly zero: skipped, it leaves the sum as it was.
+    const double support2 = 4 * c.kernel.h * c.kernel.h * (1 + 1e-5);
+    const double xw = packed.x[w], yw = packed.y[w], zw = packed.z[w];
+    cells.for_each_clipped_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         if (packed.fluid[i] == 0) continue;
+        const double rx = packed.x[i] - xw, ry = packed.y[i] - yw, rz = packed.z[i] - zw;
+        if (rx * rx + ry * ry + rz * rz > support2) continue;
         const auto own = own_particle(packed, i, c.two_nu_rho0 / f.density[i]);
         double ax = 0, ay = 0, az = 0, drho = 0;
         add_wcsph_pair_term(packed, own, w, c.pair, c.kernel, ax, ay, az, drho);

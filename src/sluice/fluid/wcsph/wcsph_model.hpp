@@ -193,8 +193,8 @@ class WcsphModel final : public ParticleFluid<D> {
   void body_point_forces(const std::vector<BodyKinematics>&,
                          std::vector<Vec3>& force) const override {
     const ParticleState<D>& s = this->state();
-    exec::Default::for_each(s.particles.size(),
-                            WcsphBodyPointForce<D, Kernel>{
+    exec::Default::for_each_balanced(
+        s.particles.size(), WcsphBodyPointForce<D, Kernel>{
                                 neighbourhood(s), force.empty() ? nullptr : force.front().data()});
   }
 
