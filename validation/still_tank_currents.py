@@ -67,6 +67,22 @@ def kinetic_energy(out):
     return data["time"], data["fluid_kinetic"]
 
 
+def plot_energy(axes, out, label, times):
+    """Draws the run's kinetic energy on axes and prints it at `times`."""
+    t, ke = kinetic_energy(out)
+    axes.semilogy(t, np.maximum(ke, 1e-8), label=label)
+    print(f"{label}: fluid kinetic energy at " + ", ".join(f"{s:g}" for s in times) + " s: " +
+          ", ".join(f"{np.interp(s, t, ke):.2e} J" for s in times))
+
+
+def label_energy_axes(axes, mass, title):
+    axes.set_xlabel("t (s)")
+    axes.set_ylabel(f"fluid kinetic energy (J), {mass} kg of water")
+    axes.set_title(title)
+    axes.legend(fontsize=7)
+    axes.grid(True, which="both", alpha=0.3)
+
+
 def frame_at(out, time):
     """The fluid's positions (x, z) and velocities of the frame nearest `time`."""
     series = ET.parse(os.path.join(out, "hydrostatic_2d.pvd")).getroot().iter("DataSet")
@@ -88,15 +104,8 @@ def main():
     for k, (label, overrides) in enumerate(VARIANTS):
         out = run_case("hydrostatic_2d", args, overrides, suffix=f"_{k}")
         first = first or out
-        t, ke = kinetic_energy(out)
-        energy.semilogy(t, np.maximum(ke, 1e-7), label=label)
-        print(f"{label}: fluid kinetic energy at 0.5, 1.0, 1.5, 2.0 s: " + ", ".join(
-            f"{np.interp(s, t, ke):.2e} J" for s in (0.5, 1.0, 1.5, 2.0)))
-    energy.set_xlabel("t (s)")
-    energy.set_ylabel("fluid kinetic energy (J), 1000 kg of water")
-    energy.set_title("F1 still tank (wcsph): kinetic energy")
-    energy.legend(fontsize=7)
-    energy.grid(True, which="both", alpha=0.3)
+        plot_energy(energy, out, label, (0.5, 1.0, 1.5, 2.0))
+    label_energy_axes(energy, 1000, "F1 still tank (wcsph): kinetic energy")
 
     time, x, v = frame_at(first, 1.5)
     speed = np.linalg.norm(v, axis=1)
@@ -113,15 +122,9 @@ def main():
     field.set_title(f"default run, velocities at t = {time:.1f} s")
 
     for h_over_dx in (1.5, 2):
-        t, ke = kinetic_energy(run_tank_3d(args, h_over_dx))
-        energy_3d.semilogy(t, np.maximum(ke, 1e-8), label=f"h = {h_over_dx} dx")
-        print(f"3D tank, h = {h_over_dx} dx: fluid kinetic energy at 1, 2, 2.5, 3 s: " + ", ".join(
-            f"{np.interp(s, t, ke):.2e} J" for s in (1.0, 2.0, 2.5, 3.0)))
-    energy_3d.set_xlabel("t (s)")
-    energy_3d.set_ylabel("fluid kinetic energy (J), 62.5 kg of water")
-    energy_3d.set_title("3D tank 0.5 x 0.25 m, 0.5 m deep, dx = 0.025 m")
-    energy_3d.legend(fontsize=7)
-    energy_3d.grid(True, which="both", alpha=0.3)
+        plot_energy(energy_3d, run_tank_3d(args, h_over_dx), f"3D tank, h = {h_over_dx} dx",
+                    (1.0, 2.0, 2.5, 3.0))
+    label_energy_axes(energy_3d, 62.5, "3D tank 0.5 x 0.25 m, 0.5 m deep, dx = 0.025 m")
     save_figure(fig, "f1_still_tank_currents.png")
 
 
