@@ -29,6 +29,7 @@ struct RunEnd {
   std::vector<Vec<D>> position, velocity;
   std::vector<Real> density, pressure;
   std::vector<Vec3> body_position, fluid_force;
+  FluidEnergy energy;
   long steps = 0;
 };
 
@@ -43,7 +44,8 @@ RunEnd<D> run_to(const io::CaseConfig& config, double end,
     sim.fluid().frame();  // the device's copy comes back first, as below
     after_each_step(sim.state().particles);
   });
-  sim.fluid().frame();  // a reader of the particles: the device's copy comes back first
+  out.energy = sim.fluid().energy();  // on a device, summed there
+  sim.fluid().frame();                // a reader of the particles: the device's copy comes back
   const auto& ps = sim.state().particles;
   out.position = ps.position;
   out.velocity = ps.velocity;
@@ -75,6 +77,9 @@ void expect_same_bits(const std::string& file, const std::vector<std::string>& o
   EXPECT_EQ(differ, 0u) << file << ": particles that differ after " << cpu.steps << " steps";
   EXPECT_EQ(device.body_position, cpu.body_position) << file;
   EXPECT_EQ(device.fluid_force, cpu.fluid_force) << file;
+  EXPECT_EQ(device.energy.kinetic, cpu.energy.kinetic) << file;
+  EXPECT_EQ(device.energy.potential, cpu.energy.potential) << file;
+  EXPECT_EQ(device.energy.mass, cpu.energy.mass) << file;
 }
 
 TEST(WcsphDevice, EmulatedRunIsTheCpuRunBitForBit) {

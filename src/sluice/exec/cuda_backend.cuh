@@ -100,19 +100,15 @@ struct CudaBackend {
   template <class Value>
   static double max_of(std::size_t n, const Value& value, Array<double>& scratch) {
     if (n == 0) return -std::numeric_limits<double>::infinity();
-    if (scratch.size() < n + 1) scratch.resize(n + 1);
-    evaluate_each<<<blocks(n), kBlock>>>(n, value, scratch.data());
-    cuda_check(cudaGetLastError(), "a reduction's launch");
-    std::size_t bytes = 0;
-    cuda_check(cub::DeviceReduce::Max(nullptr, bytes, scratch.data(), scratch.data() + n,
-                                      static_cast<int>(n)),
-               "cub::DeviceReduce::Max");
-    cuda_check(cub::DeviceReduce::Max(workspace(bytes), bytes, scratch.data(), scratch.data() + n,
-                                      static_cast<int>(n)),
-               "cub::DeviceReduce::Max");
-    double result = 0;
-    scratch.to_host(&result, 1, n);
-    return result;
+    return reduce(n, value, scratch, "cub::DeviceReduce::Max",
+                  [](auto&&... args) { return cub::DeviceReduce::Max(args...); });
+  }
+
+  template <class Value>
+  static double sum_of(std::size_t n, const Value& value, Array<double>& scratch) {
+    if (n == 0) return 0;
+    return reduce(n, value, scratch, "cub::DeviceReduce::Sum",
+                  [](auto&&... args) { return cub::DeviceReduce::Sum(args...); });
   }
 
   // Stable, by the keys' lowest `bits` bits (CUB's radix sort keeps equal keys in order).
@@ -145,6 +141,24 @@ struct CudaBackend {
 
  private:
   static unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
+
+  // value(i) for i in [0, n) into scratch, reduced there by CUB's `reduction` (called as
+  // reduction(workspace, bytes, in, out, n)) into scratch[n], which comes back.
+  template <class Value, class Reduction>
+  static double reduce(std::size_t n, const Value& value, Array<double>& scratch, const char* what,
+                       Reduction&& reduction) {
+    if (scratch.size() < n + 1) scratch.resize(n + 1);
+    evaluate_each<<<blocks(n), kBlock>>>(n, value, scratch.data());
+    cuda_check(cudaGetLastError(), "a reduction's launch");
+    double* in = scratch.data();
+    const int count = static_cast<int>(n);
+    std::size_t bytes = 0;
+    cuda_check(reduction(nullptr, bytes, in, in + n, count), what);
+    cuda_check(reduction(workspace(bytes), bytes, in, in + n, count), what);
+    double result = 0;
+    scratch.to_host(&result, 1, n);
+    return result;
+  }
 
   // CUB's temporary storage, kept between calls and grown as needed (a cudaMalloc per call
   // would cost more than the small steps it serves).

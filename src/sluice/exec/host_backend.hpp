@@ -49,6 +49,14 @@ struct HostBackend {
     return Default::max_of(n, value);
   }
 
+  // In index order, as the host's own loops sum.
+  template <class Value>
+  static double sum_of(std::size_t n, const Value& value, Array<double>&) {
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) sum += value(i);
+    return sum;
+  }
+
   // Stable: particles keep their order within a cell, as the host's counting sort keeps it.
   static void sort_by_key(Array<std::uint32_t>& keys, Array<std::uint32_t>& values, std::size_t n,
                           int /*bits*/) {

@@ -14,19 +14,13 @@
 #include "sluice/core/state_archive.hpp"
 #include "sluice/core/time_step.hpp"
 #include "sluice/coupling/fluid_exchange.hpp"
+#include "sluice/fluid/fluid_energy.hpp"
 #include "sluice/io/vtk_writer.hpp"
 
 namespace sluice {
 
 using StepStage = Stage<const StepClock>;
 using StageList = std::vector<std::unique_ptr<StepStage>>;
-
-struct FluidEnergy {
-  double kinetic = 0;
-  double potential = 0;  // relative to z = 0 along -g, as the bodies'
-  double elastic = 0;    // stored in the model's boundary springs (penalty-sph)
-  double mass = 0;       // of the fluid [kg]
-};
 
 // How big the fluid is: its elements (particles or cells) and, of them, the fluid ones.
 struct FluidSize {

@@ -34,6 +34,19 @@ std::vector<Vec<D>> sample_walls(const io::CaseConfig& config, int layers) {
   return walls;
 }
 
+template <int D>
+FluidEnergyShare<D> energy_share(const ParticleSet<D>& ps, const Vec<D>& gravity) {
+  static_assert(sizeof(Vec<D>) == D * sizeof(Real), "a vector is D reals in a row");
+  auto reals = [](const auto& v) { return v.empty() ? nullptr : v.front().data(); };
+  FluidEnergyShare<D> share{ps.mass.data(),
+                            reals(ps.position),
+                            reals(ps.velocity),
+                            reinterpret_cast<const std::int32_t*>(ps.kind.data()),
+                            {}};
+  for (int a = 0; a < D; ++a) share.gravity[a] = gravity[a];
+  return share;
+}
+
 }  // namespace
 
 template <int D>
@@ -189,14 +202,11 @@ template <int D>
 FluidEnergy ParticleFluid<D>::energy() const {
   refresh_host();
   const auto& ps = state_.particles;
-  FluidEnergy e;
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    if (!ps.is_fluid(i)) continue;
-    e.kinetic += 0.5 * ps.mass[i] * ps.velocity[i].squaredNorm();
-    e.potential -= ps.mass[i] * state_.gravity.dot(ps.position[i]);
-    e.mass += ps.mass[i];
-  }
-  return e;
+  return fluid_energy(energy_share(ps, state_.gravity), [&](const FluidEnergyShare<D>& share) {
+    double sum = 0;
+    for (std::size_t i = 0; i < ps.size(); ++i) sum += share(i);
+    return sum;
+  });
 }
 
 template <int D>

@@ -14,6 +14,7 @@
 
 #include "sluice/core/types.hpp"
 #include "sluice/coupling/body_motion.hpp"
+#include "sluice/fluid/fluid_energy.hpp"
 #include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
 #include "sluice/neighbor/cell_list.hpp"
@@ -56,6 +57,9 @@ class WcsphDeviceRun {
   virtual void compute_rates() = 0;
   virtual void kick(Real dt) = 0;
   virtual Extremes extremes() const = 0;
+  // The fluid's kinetic and potential energy and mass (fluid_energy.hpp), summed on the device
+  // (energy.csv's rows cost no transfer of the particles). `gravity` holds D reals.
+  virtual FluidEnergy energy(const Real* gravity) const = 0;
   // The fluid's force on each body and its moment about the body's `centre` (one per body),
   // from the last rates: summed over the body's points on the device (point_wrench.hpp, the
   // host's arithmetic), so that one transfer of 6 reals per body comes back.

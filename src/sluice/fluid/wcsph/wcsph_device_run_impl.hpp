@@ -3,6 +3,7 @@
 //                                 from_host(p, n), to_host(p, n), copy_from(other)
 //   Backend::for_each(n, body)    body(i) for i in [0, n)
 //   Backend::max_of(n, value, scratch)  the largest value(i)
+//   Backend::sum_of(n, value, scratch)  the sum of value(i)
 //   Backend::sort_by_key(keys, values, n, bits)   stable, by the keys' lowest `bits` bits
 //   Backend::inclusive_scan(in, out, n)           out[k] = in[0] + ... + in[k]
 //   Backend::finish()             returns once every loop and copy asked for is done
@@ -17,6 +18,7 @@
 
 #include "sluice/coupling/point_wrench.hpp"
 #include "sluice/coupling/rigid_point.hpp"
+#include "sluice/fluid/fluid_energy.hpp"
 #include "sluice/fluid/particle_check.hpp"
 #include "sluice/fluid/wcsph/adami_walls.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
@@ -76,6 +78,32 @@ struct FluidFlag {
   const std::int32_t* kind;
   std::uint32_t* flag;
   SLUICE_HOST_DEVICE void operator()(std::size_t i) const { flag[i] = kind[i] == 0 ? 1u : 0u; }
+};
+
+// Particle i in the list of its kind, fluid or boundary (walls and bodies), in index order:
+// fluid_before[i] is the count of fluid particles among [0, i).
+struct ListByKind {
+  const std::int32_t* kind;
+  const std::uint32_t* fluid_before;
+  std::uint32_t *fluid, *boundary;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    const std::uint32_t before = fluid_before[i];
+    if (kind[i] == 0) {
+      fluid[before] = static_cast<std::uint32_t>(i);
+    } else {
+      boundary[i - before] = static_cast<std::uint32_t>(i);
+    }
+  }
+};
+
+// body(list[k]): a loop over the particles of one kind alone. On a GPU the threads of a warp
+// then all work (a loop over every particle leaves the other kind's threads idle beside them),
+// and the launch is as small as the work.
+template <class Body>
+struct Listed {
+  const std::uint32_t* list;
+  Body body;
+  SLUICE_HOST_DEVICE void operator()(std::size_t k) const { body(list[k]); }
 };
 
 // A body particle takes its body point's place and velocity (3D values; 2D takes x and z).
@@ -195,16 +223,21 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     // Reals: 5 vectors and 5 scalars, the gather's scratch (a vector and a scalar), the
     // reductions' scratch, the last good state (2 vectors, 2 scalars); 32-bit integers: kind
     // and body point, the gather's scratch, the sort's keys and values (and the sort's own
-    // copies of both), the scan's flags, the last good kind and body point; the packed copy:
-    // 15 floats and a count.
+    // copies of both), the scan's flags, the lists by kind, the last good kind and body point;
+    // the packed copy: 15 floats and a count.
     const double reals = (5 * D + 5) + (D + 1) + 1 + (2 * D + 2);
-    const double integers = 2 + 1 + 4 + 1 + 2;
+    const double integers = 2 + 1 + 4 + 1 + 1 + 2;
     return reals * sizeof(Real) + integers * 4 + 16 * 4;
   }
 
   void upload(const WcsphFields<D>& host) override {
     n_ = host.size;
     resize_all();
+    // No stage changes a particle's kind: the count of fluid particles is the host's.
+    fluid_count_ = 0;
+    for (std::size_t i = 0; i < n_; ++i) fluid_count_ += host.kind[i] == 0 ? 1 : 0;
+    const std::uint32_t zero = 0;
+    fluid_before_.from_host(&zero, 1);
     position_.from_host(host.position, D * n_);
     velocity_.from_host(host.velocity, D * n_);
     density_.from_host(host.density, n_);
@@ -266,6 +299,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     gather(wall_velocity_, D);
     Backend::for_each(setup_.cell_count + 1,
                       device_bodies::CellStart{key_.data(), n_, cell_start_.data()});
+    list_by_kind();
   }
 
   void set_body_motion(const std::vector<Real>& body_motion) override {
@@ -282,12 +316,12 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
 
   void update_walls() override {
     pack(false);
-    Backend::for_each(n_, AdamiWall<D, Kernel>{neighbourhood()});
+    for_each_boundary(AdamiWall<D, Kernel>{neighbourhood()});
   }
 
   void compute_rates() override {
     pack(true);
-    Backend::for_each(n_, WcsphRates<D, Kernel>{neighbourhood()});
+    for_each_fluid(WcsphRates<D, Kernel>{neighbourhood()});
   }
 
   void kick(Real dt) override {
@@ -302,11 +336,19 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     return e;
   }
 
+  FluidEnergy energy(const Real* gravity) const override {
+    FluidEnergyShare<D> share{mass_.data(), position_.data(), velocity_.data(), kind_.data(), {}};
+    for (int a = 0; a < D; ++a) share.gravity[a] = gravity[a];
+    return fluid_energy(share, [&](const FluidEnergyShare<D>& part) {
+      return Backend::sum_of(n_, part, scratch_);
+    });
+  }
+
   void body_loads(const std::vector<Vec3>& centre, std::vector<Wrench>& out) const override {
     const std::size_t bodies = centre.size();
     out.assign(bodies, Wrench{});
     if (setup_.body_point_count == 0 || bodies == 0) return;
-    Backend::for_each(n_, WcsphBodyPointForce<D, Kernel>{neighbourhood(), point_force_.data()});
+    for_each_boundary(WcsphBodyPointForce<D, Kernel>{neighbourhood(), point_force_.data()});
     body_centre_.from_host(centre.front().data(), 3 * bodies);
     Backend::for_each(
         bodies, device_bodies::BodyWrench{point_position_.data(), point_force_.data(),
@@ -353,6 +395,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     key_.resize(n_);
     order_.resize(n_);
     flag_.resize(n_);
+    kind_list_.resize(n_);
     gather_vector_.resize(D * n_);
     gather_scalar_.resize(n_);
     gather_int_.resize(n_);
@@ -432,14 +475,28 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
   PackedParticles::View packed_view() const { return packed_arrays().view(); }
 
-  // The packed copy and fluid_before (fluid_before[k] = fluid particles among [0, k)).
   void pack(bool with_rates) {
     Backend::for_each(
         n_, WcsphPack<D>{fields(), packed_arrays(), setup_.constants.no_slip, with_rates});
+  }
+
+  // After each sort: fluid_before (fluid_before[k] = fluid particles among [0, k); its first
+  // entry, 0, is written once) and the lists by kind, the fluid first, in kind_list_.
+  void list_by_kind() {
     Backend::for_each(n_, device_bodies::FluidFlag{kind_.data(), flag_.data()});
-    const std::uint32_t zero = 0;
-    fluid_before_.from_host(&zero, 1);
     Backend::inclusive_scan(flag_.data(), fluid_before_.data() + 1, n_);
+    Backend::for_each(
+        n_, device_bodies::ListByKind{kind_.data(), fluid_before_.data(), kind_list_.data(),
+                                      kind_list_.data() + fluid_count_});
+  }
+  template <class Body>
+  void for_each_fluid(const Body& body) const {
+    Backend::for_each(fluid_count_, device_bodies::Listed<Body>{kind_list_.data(), body});
+  }
+  template <class Body>
+  void for_each_boundary(const Body& body) const {
+    Backend::for_each(n_ - fluid_count_,
+                      device_bodies::Listed<Body>{kind_list_.data() + fluid_count_, body});
   }
 
   // Reorders a field by the sort's order through a scratch array of the same size, which the
@@ -466,7 +523,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   Array<Real> position_, velocity_, density_, pressure_, mass_, acceleration_, density_rate_,
       half_velocity_, half_density_, wall_velocity_;
   Array<std::int32_t> kind_, body_point_;
-  Array<std::uint32_t> key_, order_, flag_, cell_start_, fluid_before_;
+  Array<std::uint32_t> key_, order_, flag_, cell_start_, fluid_before_, kind_list_;
+  std::size_t fluid_count_ = 0;
   Array<Real> gather_vector_, gather_scalar_;
   Array<std::int32_t> gather_int_;
   mutable Array<double> scratch_;
