@@ -96,9 +96,9 @@ struct ListByKind {
   }
 };
 
-// body(list[k]): a loop over the particles of one kind alone. On a GPU the threads of a warp
-// then all work (a loop over every particle leaves the other kind's threads idle beside them),
-// and the launch is as small as the work.
+// body(list[k]): a loop over the particles of one kind alone. On a GPU a loop over every
+// particle launches as many threads again that return at once, beside the working ones in
+// their warps; over the list the launch is as small as the work.
 template <class Body>
 struct Listed {
   const std::uint32_t* list;
