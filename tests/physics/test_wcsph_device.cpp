@@ -19,6 +19,7 @@
 #endif
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/sim/probes.hpp"
+#include "sluice/sim/size_estimate.hpp"
 
 namespace sluice {
 namespace {
@@ -132,6 +133,7 @@ TEST(WcsphDevice, WaterThrownAtTheFloorIsKeptOutOfItOnTheDeviceToo) {
 TEST(WcsphDevice, GpuRefusedWithTheReasonWhereNoneIsFound) {
   std::string why;
   if (wcsph_device_available(WcsphDevice::kGpu, why)) GTEST_SKIP() << "a GPU is here";
+  EXPECT_EQ(device_memory(WcsphDevice::kGpu).free_bytes, 0);  // unknown: no refusal by size
   try {
     Simulation<2> sim(testing::load_case("dam_break_2d.yaml", {"model.device=gpu"}));
     FAIL() << "a run on the GPU started without one";
@@ -160,6 +162,32 @@ TEST(WcsphGpu, BackendAgreesWithTheHost) {
   for (const std::size_t n : {std::size_t{1000}, std::size_t{1} << 20})
     EXPECT_EQ(exec::check_cuda_backend(n), "") << n << " values";
 #endif
+}
+
+// The GPU's free memory, as the size check before a run reads it: a case that needs several
+// times of it is refused at its spacing, naming the GPU, before anything is built.
+TEST(WcsphGpu, ACaseTooLargeForTheGpusMemoryIsRefusedAtItsSpacing) {
+  if (!gpu_here()) GTEST_SKIP() << "no GPU";
+  const DeviceMemory gpu = device_memory(WcsphDevice::kGpu);
+  std::printf("%s: %.3g GB free\n", gpu.name.c_str(), gpu.free_bytes / 1e9);
+  EXPECT_GT(gpu.free_bytes, 1e9);
+  EXPECT_NE(gpu.name.find("(CUDA)"), std::string::npos) << gpu.name;
+  io::CaseConfig config = testing::load_case("bench_dam_break_3d.yaml", {"model.device=gpu"});
+  ASSERT_TRUE(runs_on_a_gpu(config));
+  EXPECT_NO_THROW(refuse_if_the_gpu_cannot_hold(config, estimate_size(config), gpu));
+  // The water grows as the spacing to the power -3, the walls as -2: at this spacing the
+  // estimate needs more than the free memory (four times, were the walls to grow as the water).
+  const double needed =
+      estimate_size(config).elements * wcsph_device_bytes_per_particle(config.dimension);
+  config.spacing *= std::cbrt(needed / (4 * gpu.free_bytes));
+  try {
+    refuse_if_the_gpu_cannot_hold(config, estimate_size(config), gpu);
+    FAIL() << "not refused at " << config.spacing << " m";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.key(), "spacing") << message;
+    EXPECT_NE(message.find(gpu.name), std::string::npos) << message;
+  }
 }
 
 // F1: the still tank's bottom pressure after 2 s, on the GPU and on the CPU.

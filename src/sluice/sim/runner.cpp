@@ -62,7 +62,8 @@ template <int D>
 RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // Build (and so validate) everything before creating the output directory: bad input
   // must leave no directory behind; and nothing is allocated for a case that cannot fit.
-  refuse_if_it_cannot_fit(config, estimate_size(config), machine_memory_bytes());
+  const SizeEstimate estimate = estimate_size(config);
+  refuse_if_it_cannot_fit_here(config, estimate);
   Simulation<D> sim(config);
   const double end_time = options.end_time.value_or(config.end_time);
   const std::string model = config.has_fluid() ? config.model_name : "bodies-alone";
@@ -247,7 +248,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
 template <int D>
 CheckSummary check(const io::CaseConfig& config) {
   const SizeEstimate estimate = estimate_size(config);
-  refuse_if_it_cannot_fit(config, estimate, machine_memory_bytes());
+  refuse_if_it_cannot_fit_here(config, estimate);
   Simulation<D> sim(config);
   const FluidSize size = sim.fluid().size();
   CheckSummary out;

@@ -118,6 +118,29 @@ double machine_memory_bytes() {
   return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
 }
 
+bool runs_on_a_gpu(const io::CaseConfig& config) {
+  if (!config.has_fluid() || config.model_name != "wcsph") return false;
+  const YAML::Node device = config.model["device"];
+  return device && device.IsScalar() && device.Scalar() == "gpu";
+}
+
+void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstimate& estimate,
+                                   const DeviceMemory& gpu) {
+  const double needed = estimate.elements * wcsph_device_bytes_per_particle(config.dimension);
+  if (gpu.free_bytes <= 0 || needed <= gpu.free_bytes) return;
+  throw InputError(config.spacing_place.first, config.spacing_place.second, "spacing",
+                   fmt::format("at {} m the case needs about {:.3g} particles and {} of the "
+                               "GPU's memory; the {} has {} free",
+                               config.spacing, estimate.elements, readable_bytes(needed), gpu.name,
+                               readable_bytes(gpu.free_bytes)));
+}
+
+void refuse_if_it_cannot_fit_here(const io::CaseConfig& config, const SizeEstimate& estimate) {
+  refuse_if_it_cannot_fit(config, estimate, machine_memory_bytes());
+  if (runs_on_a_gpu(config))
+    refuse_if_the_gpu_cannot_hold(config, estimate, device_memory(WcsphDevice::kGpu));
+}
+
 std::string readable_bytes(double bytes) {
   const char* units[] = {"B", "kB", "MB", "GB", "TB", "PB", "EB"};
   int k = 0;

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice {
@@ -27,5 +28,17 @@ std::string readable_bytes(double bytes);
 // Throws InputError at the case's `spacing` when the estimate exceeds `available` bytes.
 void refuse_if_it_cannot_fit(const io::CaseConfig& config, const SizeEstimate& estimate,
                              double available);
+
+// Whether the case runs the wcsph model on a GPU (model.device: gpu, or `--device gpu`).
+bool runs_on_a_gpu(const io::CaseConfig& config);
+
+// Throws InputError at the case's `spacing` when the estimate's particles need more of the
+// GPU's memory (wcsph_device_bytes_per_particle) than `gpu` has free; nothing when its free
+// memory is unknown (0).
+void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstimate& estimate,
+                                   const DeviceMemory& gpu);
+
+// Both, against this machine: its memory, and its GPU's where the case runs on one.
+void refuse_if_it_cannot_fit_here(const io::CaseConfig& config, const SizeEstimate& estimate);
 
 }  // namespace sluice

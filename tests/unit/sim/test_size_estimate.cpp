@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "sluice/core/errors.hpp"
+#include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/runner.hpp"
 #include "sluice/sim/size_estimate.hpp"
@@ -71,6 +72,39 @@ TEST(SizeEstimate, RefusesACaseThatCannotFitAtItsSpacing) {
     EXPECT_EQ(e.key(), "spacing");
     EXPECT_EQ(e.line(), 2);
     EXPECT_NE(std::string(e.what()).find("this machine has 24 GB"), std::string::npos) << e.what();
+  }
+}
+
+// A case on a GPU: model.device gpu with the wcsph model, and no other.
+io::CaseConfig on_device(io::CaseConfig config, const std::string& device) {
+  config.model["device"] = device;
+  return config;
+}
+
+TEST(SizeEstimate, OnlyWcsphWithDeviceGpuRunsOnAGpu) {
+  EXPECT_TRUE(runs_on_a_gpu(on_device(tank_case(3, "wcsph", 0.05), "gpu")));
+  EXPECT_FALSE(runs_on_a_gpu(tank_case(3, "wcsph", 0.05)));
+  EXPECT_FALSE(runs_on_a_gpu(on_device(tank_case(3, "wcsph", 0.05), "emulated")));
+  EXPECT_FALSE(runs_on_a_gpu(on_device(tank_case(3, "mps", 0.05), "gpu")));
+}
+
+TEST(SizeEstimate, RefusesACaseThatCannotFitInTheGpusFreeMemory) {
+  const io::CaseConfig config = on_device(tank_case(3, "wcsph", 0.002), "gpu");
+  const SizeEstimate estimate = estimate_size(config);
+  const double needed = estimate.elements * wcsph_device_bytes_per_particle(3);
+  EXPECT_NO_THROW(refuse_if_the_gpu_cannot_hold(config, estimate, {"Test GPU", 2 * needed}));
+  EXPECT_NO_THROW(refuse_if_the_gpu_cannot_hold(config, estimate, {"GPU", 0}));  // unknown
+  try {
+    refuse_if_the_gpu_cannot_hold(config, estimate, {"Test GPU", needed / 2});
+    FAIL() << "not refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "spacing");
+    EXPECT_EQ(e.line(), 2);
+    const std::string message = e.what();
+    EXPECT_NE(
+        message.find("GPU's memory; the Test GPU has " + readable_bytes(needed / 2) + " free"),
+        std::string::npos)
+        << message;
   }
 }
 

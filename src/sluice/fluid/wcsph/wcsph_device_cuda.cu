@@ -23,6 +23,12 @@ bool cuda_device_found(std::string& why) {
   return true;
 }
 
+DeviceMemory cuda_device_memory() {
+  std::size_t free = 0, total = 0;
+  exec::cuda_check(cudaMemGetInfo(&free, &total), "cudaMemGetInfo");
+  return {exec::CudaBackend::name(), static_cast<double>(free)};
+}
+
 template <int D, class Kernel>
 std::unique_ptr<WcsphDeviceRun<D>> make_wcsph_cuda_run(const WcsphDeviceSetup<D, Kernel>& setup) {
   return std::make_unique<WcsphDeviceRunOn<D, Kernel, exec::CudaBackend>>(setup);

@@ -14,6 +14,7 @@ namespace sluice {
 #if defined(SLUICE_WITH_CUDA)
 // wcsph_device_cuda.cu
 bool cuda_device_found(std::string& why);
+DeviceMemory cuda_device_memory();
 template <int D, class Kernel>
 std::unique_ptr<WcsphDeviceRun<D>> make_wcsph_cuda_run(const WcsphDeviceSetup<D, Kernel>& setup);
 #endif
@@ -26,6 +27,26 @@ bool wcsph_device_available(WcsphDevice device, std::string& why) {
   why = "this sluice was built without CUDA (nvcc was not found when it was configured)";
   return false;
 #endif
+}
+
+double wcsph_device_bytes_per_particle(int dimension) {
+  // Reals: 5 vectors and 5 scalars, the gather's scratch (a vector and a scalar), the
+  // reductions' scratch, the last good state (2 vectors, 2 scalars); 32-bit integers: kind
+  // and body point, the gather's scratch, the sort's keys and values (and the sort's own
+  // copies of both), the scan's flags, the lists by kind, the last good kind and body point;
+  // the packed copy: 15 floats and a count.
+  const int d = dimension;
+  const double reals = (5 * d + 5) + (d + 1) + 1 + (2 * d + 2);
+  const double integers = 2 + 1 + 4 + 1 + 1 + 2;
+  return reals * sizeof(Real) + integers * 4 + 16 * 4;
+}
+
+DeviceMemory device_memory(WcsphDevice device) {
+#if defined(SLUICE_WITH_CUDA)
+  std::string why;
+  if (device == WcsphDevice::kGpu && cuda_device_found(why)) return cuda_device_memory();
+#endif
+  return {device == WcsphDevice::kGpu ? "GPU" : "host", 0};
 }
 
 template <int D, class Kernel>

@@ -27,6 +27,18 @@ enum class WcsphDevice { kCpu, kGpu, kEmulated };
 // without CUDA, no GPU found).
 bool wcsph_device_available(WcsphDevice device, std::string& why);
 
+// Bytes of device memory a particle takes in a run of `dimension` (2 or 3): the run's arrays,
+// the sort's and the gather's scratch, the lists by kind, the last good state, the packed copy.
+double wcsph_device_bytes_per_particle(int dimension);
+
+// A device's name and the memory it has free: a GPU's, as CUDA reports it; zero bytes for the
+// host's threads (`emulated`), whose memory the case's size estimate has checked.
+struct DeviceMemory {
+  std::string name;
+  double free_bytes = 0;
+};
+DeviceMemory device_memory(WcsphDevice device);
+
 template <int D>
 class WcsphDeviceRun {
  public:

@@ -219,16 +219,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
 
   std::string name() const override { return Backend::name(); }
 
-  double bytes_per_particle() const override {
-    // Reals: 5 vectors and 5 scalars, the gather's scratch (a vector and a scalar), the
-    // reductions' scratch, the last good state (2 vectors, 2 scalars); 32-bit integers: kind
-    // and body point, the gather's scratch, the sort's keys and values (and the sort's own
-    // copies of both), the scan's flags, the lists by kind, the last good kind and body point;
-    // the packed copy: 15 floats and a count.
-    const double reals = (5 * D + 5) + (D + 1) + 1 + (2 * D + 2);
-    const double integers = 2 + 1 + 4 + 1 + 1 + 2;
-    return reals * sizeof(Real) + integers * 4 + 16 * 4;
-  }
+  double bytes_per_particle() const override { return wcsph_device_bytes_per_particle(D); }
 
   void upload(const WcsphFields<D>& host) override {
     n_ = host.size;
