@@ -39,6 +39,25 @@ def largest_difference(a, b):
     return max(abs(x - y) for x, y in zip(a, b))
 
 
+def both_devices(folder, name, read):
+    """{device: (times, values)} of FOLDER/NAME_DEVICE.csv for the GPU and the CPU, each file read
+    by read(path)."""
+    runs = {}
+    for device, _, _ in DEVICES:
+        path = os.path.join(folder, f"{name}_{device}.csv")
+        require(path)
+        runs[device] = read(path)
+    return runs
+
+
+def finish_axes(axes, ylabel, title, fontsize):
+    axes.set_xlabel("time [s]")
+    axes.set_ylabel(ylabel)
+    axes.set_title(title)
+    axes.legend(loc="upper left", fontsize=fontsize)
+    axes.grid(alpha=0.3)
+
+
 def main():
     folder = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "validation", "data",
                                                                   "gpu_h100")
@@ -47,41 +66,28 @@ def main():
     front_axes.plot([t for t, _ in reference], [x for _, x in reference], "ko", ms=4,
                     label="experiment (Koshizuka & Oka 1996)")
     for spacing, colour in zip(SPACINGS, ("tab:blue", "tab:orange")):
-        fronts = {}
+        fronts = both_devices(folder, f"f2_{spacing}", lambda path: read_probe(path, "front"))
         for device, style, label in DEVICES:
-            path = os.path.join(folder, f"f2_{spacing}_{device}.csv")
-            require(path)
-            times, front = read_probe(path, "front")
-            fronts[device] = front
+            times, front = fronts[device]
             rms, _ = rms_error(times, front, reference)
             print(f"F2, {spacing} m, {device}: front RMS {rms:.4f} m against the experiment")
             front_axes.plot(times, front, style, color=colour, lw=1.2,
                             label=f"{label}, dx = {spacing} m (RMS {rms:.3f} m)")
-        print(f"F2, {spacing} m: GPU and CPU fronts at most "
-              f"{largest_difference(fronts['gpu'], fronts['cpu']) * 1000:.1f} mm apart")
-    front_axes.set_xlabel("time [s]")
-    front_axes.set_ylabel("surge front x [m]")
-    front_axes.set_title("F2: 2D dam break, GPU and CPU")
-    front_axes.legend(loc="upper left", fontsize=7)
-    front_axes.grid(alpha=0.3)
+        apart = largest_difference(fronts["gpu"][1], fronts["cpu"][1])
+        print(f"F2, {spacing} m: GPU and CPU fronts at most {apart * 1000:.1f} mm apart")
+    finish_axes(front_axes, "surge front x [m]", "F2: 2D dam break, GPU and CPU", 7)
 
-    energies = {}
+    energies = both_devices(folder, "bench_0.02",
+                            lambda path: read_column(path, "fluid_kinetic"))
     for device, style, label in DEVICES:
-        path = os.path.join(folder, f"bench_0.02_{device}.csv")
-        require(path)
-        times, kinetic = read_column(path, "fluid_kinetic")
-        energies[device] = kinetic
+        times, kinetic = energies[device]
         energy_axes.plot(times, kinetic, style, color="tab:blue" if device == "gpu" else "k",
                          lw=1.2, label=label)
-    peak = max(energies["cpu"])
-    print(f"bench case, 0.02 m: GPU and CPU kinetic energy at most "
-          f"{largest_difference(energies['gpu'], energies['cpu']):.3f} J apart "
-          f"(peak {peak:.2f} J)")
-    energy_axes.set_xlabel("time [s]")
-    energy_axes.set_ylabel("fluid kinetic energy [J]")
-    energy_axes.set_title("3D bench case at 0.02 m, GPU and CPU")
-    energy_axes.legend(loc="upper left", fontsize=8)
-    energy_axes.grid(alpha=0.3)
+    apart = largest_difference(energies["gpu"][1], energies["cpu"][1])
+    print(f"bench case, 0.02 m: GPU and CPU kinetic energy at most {apart:.3f} J apart "
+          f"(peak {max(energies['cpu'][1]):.2f} J)")
+    finish_axes(energy_axes, "fluid kinetic energy [J]", "3D bench case at 0.02 m, GPU and CPU",
+                8)
     save_figure(fig, "gpu_cpu_agreement.png")
 
 
