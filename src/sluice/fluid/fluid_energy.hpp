@@ -30,6 +30,14 @@ struct FluidEnergyShare {
   Real gravity[D];
   Part part = Part::kKinetic;
 
+  // Over arrays on the host or a device; `g` holds D reals.
+  static FluidEnergyShare over(const Real* mass, const Real* position, const Real* velocity,
+                               const std::int32_t* kind, const Real* g) {
+    FluidEnergyShare share{mass, position, velocity, kind, {}};
+    for (int a = 0; a < D; ++a) share.gravity[a] = g[a];
+    return share;
+  }
+
   SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
     if (kind[i] != 0) return 0.0;
     const Real* v = velocity + D * i;

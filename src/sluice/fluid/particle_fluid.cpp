@@ -38,13 +38,9 @@ template <int D>
 FluidEnergyShare<D> energy_share(const ParticleSet<D>& ps, const Vec<D>& gravity) {
   static_assert(sizeof(Vec<D>) == D * sizeof(Real), "a vector is D reals in a row");
   auto reals = [](const auto& v) { return v.empty() ? nullptr : v.front().data(); };
-  FluidEnergyShare<D> share{ps.mass.data(),
-                            reals(ps.position),
-                            reals(ps.velocity),
-                            reinterpret_cast<const std::int32_t*>(ps.kind.data()),
-                            {}};
-  for (int a = 0; a < D; ++a) share.gravity[a] = gravity[a];
-  return share;
+  return FluidEnergyShare<D>::over(ps.mass.data(), reals(ps.position), reals(ps.velocity),
+                                   reinterpret_cast<const std::int32_t*>(ps.kind.data()),
+                                   gravity.data());
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "sluice/particles/particle_set.hpp"
 
+#include <algorithm>
+
 #include "sluice/exec/policy.hpp"
 
 namespace sluice {
@@ -16,6 +18,9 @@ void permute(std::vector<T>& field, const std::vector<std::uint32_t>& order) {
 
 template <int D>
 void ParticleSet<D>::reorder(const std::vector<std::uint32_t>& order) {
+  // A set already in order (a device's copy come back, a tank at rest) skips the copies.
+  std::uint32_t k = 0;
+  if (std::all_of(order.begin(), order.end(), [&](std::uint32_t i) { return i == k++; })) return;
   permute(position, order);
   permute(velocity, order);
   permute(density, order);

@@ -328,8 +328,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   FluidEnergy energy(const Real* gravity) const override {
-    FluidEnergyShare<D> share{mass_.data(), position_.data(), velocity_.data(), kind_.data(), {}};
-    for (int a = 0; a < D; ++a) share.gravity[a] = gravity[a];
+    const auto share = FluidEnergyShare<D>::over(mass_.data(), position_.data(), velocity_.data(),
+                                                 kind_.data(), gravity);
     return fluid_energy(share, [&](const FluidEnergyShare<D>& part) {
       return Backend::sum_of(n_, part, scratch_);
     });

@@ -187,13 +187,11 @@ class WcsphModel final : public ParticleFluid<D> {
     if (!device_ || host_current_) return;
     auto& s = const_cast<ParticleState<D>&>(this->state());
     device_->download(fields(s));
+    // No stage after the device's sort moves a particle across a cell, so the host's sort
+    // finds them in order, and reorder copies nothing.
     std::vector<std::uint32_t> order;
     s.cells.sort(s.particles.position, order);
-    // No stage after the device's sort moves a particle across a cell, so the host's sort finds
-    // them in order: then the copy of every field that reorder makes is skipped.
-    std::uint32_t k = 0;
-    if (!std::all_of(order.begin(), order.end(), [&](std::uint32_t i) { return i == k++; }))
-      s.particles.reorder(order);
+    s.particles.reorder(order);
     host_current_ = true;
   }
 
