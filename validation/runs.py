@@ -52,3 +52,23 @@ def save_figure(fig, name):
     path = os.path.join(ROOT, "docs", "img", name)
     fig.savefig(path, dpi=120)
     print(f"wrote {path}")
+
+
+def write_table(doc, name, text):
+    """Replaces the lines between '<!-- table NAME: ... -->' and '<!-- end of table NAME -->' in
+    docs/<doc> with text (the first marker names the script that writes it), so that a rerun of
+    the script, not a retyping, brings the page up to date. Prints the table too."""
+    print(text)
+    path = os.path.join(ROOT, "docs", doc)
+    with open(path) as f:
+        lines = f.read().split("\n")
+    begin = next((k for k, line in enumerate(lines)
+                  if line.startswith(f"<!-- table {name}:")), None)
+    end = next((k for k, line in enumerate(lines) if line == f"<!-- end of table {name} -->"),
+               None)
+    if begin is None or end is None or end < begin:
+        sys.exit(f"{os.path.basename(sys.argv[0])}: docs/{doc} has no markers for table {name}")
+    lines[begin + 1:end] = text.rstrip("\n").split("\n")
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
+    print(f"wrote table {name} in {path}")
