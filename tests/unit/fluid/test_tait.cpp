@@ -35,5 +35,16 @@ TEST(Tait, TensionBeyondTheEquationIsClamped) {
   EXPECT_DOUBLE_EQ(eos.density(-eos.stiffness), clamped);
 }
 
+// negative_pressure: clamp (wcsph's default) gives no pressure below zero, and leaves the
+// compressed side and the inverse as they were; keep gives the equation's tension.
+TEST(Tait, NegativePressureClampedOrKept) {
+  const TaitEquation kept(1000, 30, 7), clamped(1000, 30, 7, true);
+  EXPECT_LT(kept.pressure(990), -800.0);
+  EXPECT_EQ(clamped.pressure(990), 0.0);
+  EXPECT_EQ(clamped.pressure(1000), 0.0);
+  EXPECT_DOUBLE_EQ(clamped.pressure(1010), kept.pressure(1010));
+  EXPECT_DOUBLE_EQ(clamped.density(-500), kept.density(-500));
+}
+
 }  // namespace
 }  // namespace sluice

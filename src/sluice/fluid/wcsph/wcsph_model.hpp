@@ -35,15 +35,17 @@ class WcsphModel final : public ParticleFluid<D> {
                          bodies),
         p_(parameters),
         kernel_(parameters.smoothing_length(config.spacing)),
-        eos_(config.fluid.density, parameters.sound_speed, parameters.gamma),
+        eos_(config.fluid.density, parameters.sound_speed, parameters.gamma,
+             parameters.clamp_negative_pressure),
         boundary_(wcsph_boundaries<D, Kernel>().make(parameters.boundary)) {}
 
   std::string describe() const override {
     std::string out = fmt::format(
         "wcsph: kernel {}, h = {:.4g} m ({} dx), c0 = {:.4g} m/s, alpha = {}, delta = {}, "
-        "walls {}",
+        "walls {}, negative pressure {}",
         Kernel::kName, kernel_.h, p_.h_over_dx, eos_.c0, p_.artificial_viscosity,
-        p_.density_diffusion, p_.no_slip ? "no-slip" : "free-slip");
+        p_.density_diffusion, p_.no_slip ? "no-slip" : "free-slip",
+        p_.clamp_negative_pressure ? "clamped" : "kept");
     if (device_) {
       out += fmt::format(", on {} ({:.0f} bytes per particle there)", device_->name(),
                          device_->bytes_per_particle());

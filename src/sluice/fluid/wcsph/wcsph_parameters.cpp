@@ -40,6 +40,9 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
     model.fail("wall_slip", fmt::format("expected no_slip or free_slip, got '{}'", slip));
   }
   p.no_slip = slip == "no_slip";
+  p.clamp_negative_pressure =
+      model.optional_choice("negative_pressure", "clamp", "negative pressure", {"clamp", "keep"}) ==
+      "clamp";
   p.boundary = model.optional_choice("boundary", p.boundary, "boundary treatment",
                                      wcsph_boundaries<3, WendlandC2<3>>().names());
   const std::string device =
