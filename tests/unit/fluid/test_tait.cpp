@@ -35,8 +35,8 @@ TEST(Tait, TensionBeyondTheEquationIsClamped) {
   EXPECT_DOUBLE_EQ(eos.density(-eos.stiffness), clamped);
 }
 
-// negative_pressure: clamp (wcsph's default) gives no pressure below zero, and leaves the
-// compressed side and the inverse as they were; keep gives the equation's tension.
+// negative_pressure: clamp gives no pressure below zero, and leaves the compressed side and the
+// inverse as they were; keep (wcsph's default) gives the equation's tension.
 TEST(Tait, NegativePressureClampedOrKept) {
   const TaitEquation kept(1000, 30, 7), clamped(1000, 30, 7, true);
   EXPECT_LT(kept.pressure(990), -800.0);

@@ -41,7 +41,7 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
   }
   p.no_slip = slip == "no_slip";
   p.clamp_negative_pressure =
-      model.optional_choice("negative_pressure", "clamp", "negative pressure", {"clamp", "keep"}) ==
+      model.optional_choice("negative_pressure", "keep", "negative pressure", {"clamp", "keep"}) ==
       "clamp";
   p.boundary = model.optional_choice("boundary", p.boundary, "boundary treatment",
                                      wcsph_boundaries<3, WendlandC2<3>>().names());
