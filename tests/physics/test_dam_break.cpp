@@ -26,7 +26,7 @@ std::vector<std::pair<double, double>> reference_front() {
 
 }  // namespace
 
-double testing::dam_break_front_rms(const std::vector<std::string>& overrides) {
+testing::DamBreakFront testing::dam_break_front(const std::vector<std::string>& overrides) {
   const auto reference = reference_front();
   EXPECT_GE(reference.size(), 10u);
   Simulation<2> sim(testing::load_case("dam_break_2d.yaml", overrides));
@@ -38,28 +38,78 @@ double testing::dam_break_front_rms(const std::vector<std::string>& overrides) {
     times.push_back(s.time);
     fronts.push_back(probe.measure(sim.fluid())[0]);
   });
-  double sum2 = 0;
-  int count = 0;
-  for (const auto& [t, x] : reference) {
-    if (t > 0.70) continue;
-    const auto k =
-        static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), t) - times.begin());
-    const double w = (t - times[k - 1]) / (times[k] - times[k - 1]);
-    const double simulated = fronts[k - 1] + w * (fronts[k] - fronts[k - 1]);
-    sum2 += (simulated - x) * (simulated - x);
-    ++count;
+  // The run's front at the experiment's time t read on a clock started `delay` later.
+  auto rms_with_delay = [&](double delay) {
+    double sum2 = 0;
+    int count = 0;
+    for (const auto& [t, x] : reference) {
+      if (t > 0.70) continue;
+      const double at = std::max(t - delay, 0.0);
+      const auto k = std::max<std::size_t>(
+          1, static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), at) -
+                                      times.begin()));
+      const double w = (at - times[k - 1]) / (times[k] - times[k - 1]);
+      const double simulated = fronts[k - 1] + w * (fronts[k] - fronts[k - 1]);
+      sum2 += (simulated - x) * (simulated - x);
+      ++count;
+    }
+    return std::sqrt(sum2 / count);
+  };
+  DamBreakFront out{rms_with_delay(0), rms_with_delay(0), 0};
+  for (int ms = 1; ms <= 80; ++ms) {
+    const double rms = rms_with_delay(0.001 * ms);
+    if (rms < out.delayed_rms) out = {out.rms, rms, 0.001 * ms};
   }
-  return std::sqrt(sum2 / count);
+  return out;
 }
 
 namespace {
 
-TEST(DamBreak2D, SurgeFrontMatchesExperiment) {
-  const double rms = testing::dam_break_front_rms({});
-  RecordProperty("front_rms_m", std::to_string(rms));
-  std::printf("F2 surge-front RMS error: %.3f m\n", rms);
-  EXPECT_LT(rms, 0.30);
+// Every model at the spacing its other CI checks use and at half of it, held to VALIDATION.md's
+// two bars: (a) below 0.40 m as measured, (b) below 0.08 m with the experiment's clock delayed
+// by the fitted d ('granular', a packing of spheres, to (a) only).
+struct FrontRun {
+  const char* model;
+  double ci_spacing;
+  bool halved;  // at half the CI spacing
+  bool held_to_the_delayed_bar;
+  double spacing() const { return halved ? ci_spacing / 2 : ci_spacing; }
+};
+
+class DamBreakFront : public ::testing::TestWithParam<FrontRun> {};
+
+TEST_P(DamBreakFront, MeetsBothBars) {
+  const FrontRun run = GetParam();
+  const testing::DamBreakFront front = testing::dam_break_front(
+      {std::string("model.name=") + run.model, "spacing=" + std::to_string(run.spacing())});
+  std::printf(
+      "F2 %s at %g m: front RMS (a) %.3f m as measured, (b) %.3f m with the experiment "
+      "%.3f s later\n",
+      run.model, run.spacing(), front.rms, front.delayed_rms, front.delay);
+  EXPECT_LT(front.rms, 0.40);
+  if (run.held_to_the_delayed_bar) {
+    EXPECT_LT(front.delayed_rms, 0.08);
+  }
 }
+
+// The halved runs are the slow ones (mps at 0.0125 m: minutes): scripts/test_all.sh runs them
+// in the release build only.
+INSTANTIATE_TEST_SUITE_P(
+    F2, DamBreakFront,
+    ::testing::Values(
+        FrontRun{"wcsph", 0.025, false, true}, FrontRun{"wcsph", 0.025, true, true},
+        FrontRun{"mps", 0.025, false, true}, FrontRun{"mps", 0.025, true, true},
+        FrontRun{"penalty-sph", 0.025, false, true}, FrontRun{"penalty-sph", 0.025, true, true},
+        FrontRun{"constraint", 0.05, false, true}, FrontRun{"constraint", 0.05, true, true},
+        FrontRun{"granular", 0.05, false, false}, FrontRun{"granular", 0.05, true, false},
+        FrontRun{"mac", 0.05, false, true}, FrontRun{"mac", 0.05, true, true}),
+    [](const ::testing::TestParamInfo<FrontRun>& info) {
+      std::string name = info.param.model;
+      for (char& c : name) {
+        if (c == '-') c = '_';
+      }
+      return name + (info.param.halved ? "_at_half_the_ci_spacing" : "_at_the_ci_spacing");
+    });
 
 }  // namespace
 }  // namespace sluice
