@@ -5,12 +5,15 @@ beside seed 000's MPS at the same particle distance. Writes the F3 table into do
 docs/img/f3_kleefsman_gauges.png (the four gauges) and docs/img/f3_kleefsman_pressure.png (P1-P4,
 5 ms running means). The figures' definitions are in kleefsman_figures.py.
 
-A run is MODEL@SPACING and lives in OUT_MODEL_SPACING (OUT: --out). A run that stopped before
+A run is MODEL@SPACING (MODEL+KEY=VALUE@SPACING sets model.KEY too) and lives in
+OUT_MODEL_SPACING (OUT: --out). A run that stopped before
 6 s is measured over the span it reached (seed 000 over the same span) and says so; a long run
 goes on with --resume (sluice run --resume, from its newest checkpoint).
 
 usage: /usr/bin/python3 validation/kleefsman_3d.py [--no-run | --resume] [--out DIR]
            [--runs wcsph@0.03,mps@0.03,...] [--threads N]
+       /usr/bin/python3 validation/kleefsman_3d.py --variants [--no-run]
+           (wcsph's settings compared to 0.7 s, past the first impact: the table f3-variants)
 """
 import json
 import math
@@ -32,21 +35,37 @@ COLOURS = {"wcsph": "tab:blue", "mps": "tab:red", "penalty-sph": "tab:orange",
            "constraint": "tab:purple", "granular": "tab:green", "mac": "tab:brown"}
 STYLES = {0.03: "-", 0.02: "-", 0.015: "--", 0.01: ":", 0.0075: ":"}
 END = 6.0
+# wcsph at 0.03 m to 0.7 s, each setting named whatever the case or the engine defaults to:
+# walls no-slip or free-slip, negative pressure kept or clamped; without artificial viscosity;
+# with twice the sound speed.
+VARIANTS = ",".join(f"wcsph+{v}@0.03" for v in (
+    "wall_slip=no_slip+negative_pressure=keep", "wall_slip=no_slip+negative_pressure=clamp",
+    "wall_slip=free_slip+negative_pressure=keep", "wall_slip=free_slip+negative_pressure=clamp",
+    "wall_slip=no_slip+negative_pressure=clamp+artificial_viscosity=0",
+    "wall_slip=no_slip+negative_pressure=clamp+speed_factor=20"))
+VARIANTS_END = 0.7
+CI_END = 1.0  # s, the CI checks' run
 
 
 def run_dir(args, model, spacing):
     return os.path.join(ROOT, f"{args.out}_{model}_{spacing:g}")
 
 
-def run(args, model, spacing):
+def run(args, model, spacing, end):
+    """MODEL may carry settings of its own after a '+': wcsph+wall_slip=free_slip."""
     out = run_dir(args, model, spacing)
+    name, *settings = model.split("+")
     command = [os.path.join(ROOT, args.sluice), "run", os.path.join(ROOT, "cases",
                                                                       "kleefsman_3d.yaml")]
     if args.resume and os.path.isdir(os.path.join(out, "checkpoints")):
         command += ["--resume", out]
     else:
-        command += ["--out", out, "--set", f"model.name={model}", "--set", f"spacing={spacing}"]
-    command += ["--stats", os.path.join(out, "stats.json")]
+        # The case's model mapping holds wcsph's own settings: another model gets a mapping of
+        # its own.
+        command += ["--out", out, "--set", f"spacing={spacing}", "--set",
+                    f"model.name={name}" if name == "wcsph" else f"model={{name: {name}}}"]
+        command += [item for s in settings for item in ("--set", f"model.{s}")]
+    command += ["--stats", os.path.join(out, "stats.json"), "--end", f"{end:g}"]
     if args.threads:
         command += ["--threads", str(args.threads)]
     # A run that diverges (exit 3) keeps what it wrote; the table says how far it got.
@@ -75,14 +94,14 @@ def row(name, figures, reached, extra=""):
             f"{cell(figures['p1_impulse'], 0)} | {pressures} | {extra} |")
 
 
-def table(results, experiment):
+def table(results, experiment, end):
     lines = [
         "| run | to [s] | first wet at x = 1.488 / 0.992 / 0.496 m [s] | height RMS there [m] | "
         "reservoir (2.638 m) height RMS [m] | P1 rise [s] | P1 peak [kPa] | P1 impulse "
         "0.35-0.6 s [Pa s] | P1 / P2 / P3 / P4 RMS [Pa] | wall s per simulated s |",
         "|---|---|---|---|---|---|---|---|---|---|",
-        row("experiment (Kleefsman et al. 2005)", f3.figures(experiment, experiment, (0, END)),
-            f"{END:g}")]
+        row("experiment (Kleefsman et al. 2005)", f3.figures(experiment, experiment, (0, end)),
+            f"{end:g}")]
     seeds_shown = set()
     for (model, spacing), (series, span, wall) in results.items():
         seed = f3.seed000(spacing)
@@ -98,6 +117,35 @@ def table(results, experiment):
     return "\n".join(lines)
 
 
+def bars_table(results, experiment):
+    """VALIDATION.md's bars at 0.03 m over the first second, as tests/physics/test_kleefsman.cpp
+    measures them, from each 0.03 m run's first second: met or not."""
+    span = (0.0, CI_END)
+    seed = f3.figures(f3.seed000(0.03), experiment, span)
+    measured = f3.figures(experiment, experiment, span)
+
+    def mark(ok):
+        return "met" if ok else "**not met**"
+
+    seeds = " / ".join(f"{seed['rms_' + s]:.0f}" for s in f3.SENSORS[:4])
+    lines = ["| run | first wet at x = 1.488 / 0.992 / 0.496 m, late by [s] (bar 0.05) | P1 rise, "
+             "late by [s] (bar 0.05) | reservoir RMS [m] (bar 0.03) | P1 / P2 / P3 / P4 RMS [Pa] "
+             f"(seed 000: {seeds}) |", "|---|---|---|---|---|"]
+    for (model, spacing), (series, span_reached, _) in results.items():
+        if series is None or spacing != 0.03 or span_reached[1] < CI_END:
+            continue
+        f = f3.figures(series, experiment, span)
+        late = {g: f["wet_" + g] - measured["wet_" + g] for g in f3.DOWNSTREAM}
+        wet = " / ".join(f"{late[g]:+.3f} ({mark(abs(late[g]) < 0.05)})"
+                         for g in reversed(f3.DOWNSTREAM))
+        rise = f["p1_rise"] - measured["p1_rise"]
+        pressures = " / ".join(f"{f['rms_' + s]:.0f} ({mark(f['rms_' + s] <= seed['rms_' + s])})"
+                               for s in f3.SENSORS[:4])
+        lines.append(f"| sluice `{model}` | {wet} | {rise:+.3f} ({mark(abs(rise) < 0.05)}) | "
+                     f"{f['rms_g2638']:.3f} ({mark(f['rms_g2638'] < 0.03)}) | {pressures} |")
+    return "\n".join(lines)
+
+
 def plot(results, experiment, names, title, filename, scale, unit):
     fig, axes = plt.subplots(len(names), 1, figsize=(8, 2.1 * len(names)), sharex=True)
     for ax, name in zip(axes, names):
@@ -106,8 +154,10 @@ def plot(results, experiment, names, title, filename, scale, unit):
         for (model, spacing), (series, _, _) in results.items():
             if series is None:
                 continue
-            ax.plot(series["time"], f3.smoothed(series, name) * scale, STYLES.get(spacing, "-"),
-                    color=COLOURS.get(model), lw=0.7, label=f"sluice {model}, {spacing:g} m")
+            ax.plot(series["time"], f3.smoothed(series, name) * scale,
+                    ":" if "+" in model else STYLES.get(spacing, "-"),
+                    color=COLOURS.get(model.split("+")[0]), lw=0.7,
+                    label=f"sluice {model}, {spacing:g} m")
         if name in f3.SENSORS:
             seed = f3.seed000(0.03)
             ax.plot(seed["time"], f3.smoothed(seed, name) * scale, color="0.6", lw=0.7,
@@ -128,21 +178,30 @@ def main():
     parser.add_argument("--runs", default=RUNS, help="MODEL@SPACING,...")
     parser.add_argument("--resume", action="store_true", help="go on from each run's checkpoint")
     parser.add_argument("--threads", type=int, default=0)
+    parser.add_argument("--variants", action="store_true",
+                        help="wcsph's settings to 0.7 s (table f3-variants, no plots)")
     args = parser.parse_args()
+    end, runs = (VARIANTS_END, VARIANTS) if args.variants else (END, args.runs)
+    if args.variants:
+        args.out += "_variants"
     experiment = f3.experiment()
     results = {}
-    for item in args.runs.split(","):
+    for item in runs.split(","):
         model, spacing = item.split("@")
         spacing = float(spacing)
         if not args.no_run:
-            run(args, model, spacing)
+            run(args, model, spacing, end)
         out = run_dir(args, model, spacing)
         path = os.path.join(out, "probes.csv")
         series = f3.read_probes(path) if os.path.exists(path) else None
-        span = (0.0, min(END, float(series["time"][-1]))) if series is not None else (0.0, END)
+        span = (0.0, min(end, float(series["time"][-1]))) if series is not None else (0.0, end)
         results[(model, spacing)] = (series, span, wall_per_simulated_second(out))
 
-    write_table("validation.md", "f3", table(results, experiment))
+    if args.variants:
+        write_table("validation.md", "f3-variants", table(results, experiment, end))
+        return
+    write_table("validation.md", "f3", table(results, experiment, end))
+    write_table("validation.md", "f3-bars", bars_table(results, experiment))
     plot(results, experiment, f3.GAUGES, "F3: water height at the gauges (x in mm)",
          "f3_kleefsman_gauges.png", 1.0, "m")
     plot(results, experiment, f3.SENSORS[:4],
