@@ -18,7 +18,7 @@ for dx in 0.03 0.0238 0.0189 0.015 0.0119; do
     walls=solved
     [ "$solver" = bicgstab_diagonal ] && walls=extrapolated
     "$sluice" run "$case" --out "$work/out" --set spacing=$dx --set end_time=0.02 \
-      --set output_interval=1 --set model.name=mps --set model.solver=$solver \
+      --set output_interval=1 --set "model={name: mps}" --set model.solver=$solver \
       --set model.wall_pressure=$walls \
       --stats "$work/scale_${dx}_${solver}.json" > /dev/null 2>&1 || echo "failed: $dx $solver"
   done
@@ -26,7 +26,7 @@ done
 for r in $(seq 1 "$repeat"); do
   for model in mps wcsph; do
     "$sluice" run "$case" --out "$work/out" --set end_time=$seconds --set output_interval=1 \
-      --set model.name=$model --stats "$work/model_${model}_${r}.json" > /dev/null 2>&1
+      --set "model={name: $model}" --stats "$work/model_${model}_${r}.json" > /dev/null 2>&1
   done
 done
 /usr/bin/python3 - "$work" "$repeat" "$solvers" <<'PY'

@@ -13,7 +13,7 @@ for r in $(seq 1 "$repeat"); do
     "$sluice" run cases/dam_break_2d_mps.yaml --out "$work/out" --set end_time=0.3 \
       --set model.wall_pressure=$walls --stats "$work/2d_${walls}_${r}.json" > /dev/null
     "$sluice" run cases/kleefsman_3d.yaml --out "$work/out" --set end_time=0.05 \
-      --set output_interval=1 --set checkpoint_interval=0 --set model.name=mps \
+      --set output_interval=1 --set checkpoint_interval=0 --set "model={name: mps}" \
       --set model.wall_pressure=$walls --stats "$work/3d_${walls}_${r}.json" > /dev/null
   done
 done

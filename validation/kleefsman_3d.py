@@ -146,30 +146,42 @@ def bars_table(results, experiment):
     return "\n".join(lines)
 
 
-def plot(results, experiment, names, title, filename, scale, unit):
-    fig, axes = plt.subplots(len(names), 1, figsize=(8, 2.1 * len(names)), sharex=True)
-    for ax, name in zip(axes, names):
-        ax.plot(experiment["time"], f3.smoothed(experiment, name) * scale, color="black", lw=0.9,
-                label="experiment (Kleefsman et al. 2005)")
-        for (model, spacing), (series, _, _) in results.items():
-            if series is None:
-                continue
-            ax.plot(series["time"], f3.smoothed(series, name) * scale,
-                    ":" if "+" in model else STYLES.get(spacing, "-"),
-                    color=COLOURS.get(model.split("+")[0]), lw=0.7,
-                    label=f"sluice {model}, {spacing:g} m")
-        if name in f3.SENSORS:
-            seed = f3.seed000(0.03)
-            ax.plot(seed["time"], f3.smoothed(seed, name) * scale, color="0.6", lw=0.7,
-                    label="seed 000's MPS, l0 = 0.03 m")
-            ax.set_ylim(-2, 20)
-        ax.set_ylabel(f"{name} [{unit}]")
-        ax.set_xlim(0, END)
-        ax.grid(alpha=0.3)
-    axes[0].legend(loc="upper right", fontsize=7, ncol=2)
-    axes[0].set_title(title)
-    axes[-1].set_xlabel("time [s]")
-    save_figure(fig, filename)
+VARIANT_COLOURS = ["tab:cyan", "tab:olive", "tab:pink", "tab:gray"]
+
+
+def plot(results, experiment, names, title, filename, scale, unit, zoom=None):
+    """One row per probe: the whole run, and beside it the span `zoom` (the first impact)."""
+    columns = 2 if zoom else 1
+    fig, axes = plt.subplots(len(names), columns, figsize=(5 * columns + 2, 2.1 * len(names) + 1),
+                             sharex="col", squeeze=False)
+    variants = iter(VARIANT_COLOURS)
+    colours = {key: COLOURS.get(key[0]) if "+" not in key[0] else next(variants, "black")
+               for key in results}
+    for row, name in zip(axes, names):
+        for ax, span in zip(row, [(0, END), zoom][:columns]):
+            ax.plot(experiment["time"], f3.smoothed(experiment, name) * scale, color="black",
+                    lw=0.9, label="experiment (Kleefsman et al. 2005)")
+            for key, (series, _, _) in results.items():
+                if series is not None:
+                    ax.plot(series["time"], f3.smoothed(series, name) * scale,
+                            STYLES.get(key[1], "-"), color=colours[key], lw=0.7,
+                            label=f"sluice {key[0]}, {key[1]:g} m")
+            if name in f3.SENSORS:
+                seed = f3.seed000(0.03)
+                ax.plot(seed["time"], f3.smoothed(seed, name) * scale, color="0.6", lw=0.7,
+                        label="seed 000's MPS, l0 = 0.03 m")
+                ax.set_ylim(-2, 20)
+            ax.set_xlim(*span)
+            ax.grid(alpha=0.3)
+        row[0].set_ylabel(f"{name} [{unit}]")
+    axes[0][0].set_title(title)
+    if zoom:
+        axes[0][1].set_title(f"the first impact, {zoom[0]:g}-{zoom[1]:g} s")
+    for ax in axes[-1]:
+        ax.set_xlabel("time [s]")
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", fontsize=7, ncol=2)
+    save_figure(fig, filename, rect=(0, 0.02 + 0.011 * len(labels), 1, 1))
 
 
 def main():
@@ -206,7 +218,7 @@ def main():
          "f3_kleefsman_gauges.png", 1.0, "m")
     plot(results, experiment, f3.SENSORS[:4],
          "F3: pressure on the obstacle's face, 5 ms running means", "f3_kleefsman_pressure.png",
-         1e-3, "kPa")
+         1e-3, "kPa", zoom=(0.3, 1.0))
 
 
 if __name__ == "__main__":

@@ -46,9 +46,10 @@ def read_body(out, name):
     return np.genfromtxt(path, delimiter=",", names=True)
 
 
-def save_figure(fig, name):
-    """Lays the figure out, saves it as docs/img/<name> at 120 dpi and prints where."""
-    fig.tight_layout()
+def save_figure(fig, name, rect=None):
+    """Lays the figure out (within rect, figure coordinates, where given: room for a legend
+    below), saves it as docs/img/<name> at 120 dpi and prints where."""
+    fig.tight_layout(rect=rect)
     path = os.path.join(ROOT, "docs", "img", name)
     fig.savefig(path, dpi=120)
     print(f"wrote {path}")
