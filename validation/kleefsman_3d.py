@@ -89,17 +89,19 @@ def row(name, figures, reached, extra=""):
     wet = " / ".join(cell(figures.get(f"wet_{g}"), 3) for g in reversed(f3.DOWNSTREAM))
     gauges = " / ".join(cell(figures.get(f"rms_{g}"), 3) for g in reversed(f3.GAUGES[:3]))
     pressures = " / ".join(cell(figures[f"rms_{s}"], 0) for s in f3.SENSORS[:4])
+    returns = f"{cell(figures.get('bore'), 2)} / {cell(figures.get('p1_second_rise'), 2)}"
     return (f"| {name} | {reached} | {wet} | {gauges} | {cell(figures.get('rms_g2638'), 3)} | "
             f"{cell(figures['p1_rise'], 3)} | {cell(figures['p1_peak'], 1, 1e-3)} | "
-            f"{cell(figures['p1_impulse'], 0)} | {pressures} | {extra} |")
+            f"{cell(figures['p1_impulse'], 0)} | {pressures} | {returns} | {extra} |")
 
 
 def table(results, experiment, end):
     lines = [
         "| run | to [s] | first wet at x = 1.488 / 0.992 / 0.496 m [s] | height RMS there [m] | "
         "reservoir (2.638 m) height RMS [m] | P1 rise [s] | P1 peak [kPa] | P1 impulse "
-        "0.35-0.6 s [Pa s] | P1 / P2 / P3 / P4 RMS [Pa] | wall s per simulated s |",
-        "|---|---|---|---|---|---|---|---|---|---|",
+        "0.35-0.6 s [Pa s] | P1 / P2 / P3 / P4 RMS [Pa] | the bore's return: reservoir gauge "
+        "above 0.18 m / P1 above 2 kPa again [s] | wall s per simulated s |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
         row("experiment (Kleefsman et al. 2005)", f3.figures(experiment, experiment, (0, end)),
             f"{end:g}")]
     seeds_shown = set()
@@ -110,7 +112,7 @@ def table(results, experiment, end):
             lines.append(row(f"seed 000's MPS, l0 = {spacing:g} m",
                              f3.figures(seed, experiment, span), f"{span[1]:g}"))
         if series is None:
-            lines.append(f"| sluice `{model}`, {spacing:g} m | not run | | | | | | | | |")
+            lines.append(f"| sluice `{model}`, {spacing:g} m | not run | | | | | | | | | |")
             continue
         lines.append(row(f"sluice `{model}`, {spacing:g} m", f3.figures(series, experiment, span),
                          f"{span[1]:.2f}", cell(wall, 0)))

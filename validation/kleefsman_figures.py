@@ -20,6 +20,10 @@ WINDOW = 0.005  # s, the running mean's width
 WET = 0.02  # m, a gauge is wet above this height
 RISE = 2000.0  # Pa, P1's first rise
 IMPACT = (0.35, 0.6)  # s, the first impact, for P1's peak and impulse
+# The bore thrown back from the end wall (x = 0): when it lifts the reservoir gauge above
+# 0.18 m after 2.4 s, and P1 above 2 kPa again after 4.3 s (not VALIDATION.md's figures: they
+# show how a late first front carries over to the water's return).
+BORE_HEIGHT, BORE_AFTER, SECOND_RISE_AFTER = 0.18, 2.4, 4.3
 
 
 def read_tsv(path):
@@ -117,6 +121,10 @@ def figures(series, reference, span):
         for gauge in GAUGES:
             out[f"rms_{gauge}"] = rms_against(series, gauge, reference, span)
     out["p1_rise"], out["p1_peak"], out["p1_impulse"] = p1_impact(series)
+    if "g2638" in series:
+        out["bore"] = first_crossing(t, series["g2638"], BORE_HEIGHT, BORE_AFTER)
+    out["p1_second_rise"] = first_crossing(t, running_mean(t, series["P1"]), RISE,
+                                           SECOND_RISE_AFTER)
     for sensor in SENSORS[:4]:
         out[f"rms_{sensor}"] = rms_against(series, sensor, reference, span)
     return out
