@@ -125,6 +125,9 @@ def figures(series, reference, span):
         out["bore"] = first_crossing(t, series["g2638"], BORE_HEIGHT, BORE_AFTER)
     out["p1_second_rise"] = first_crossing(t, running_mean(t, series["P1"]), RISE,
                                            SECOND_RISE_AFTER)
+    for key in ("bore", "p1_second_rise"):  # an event beyond the span is not the run's
+        if out.get(key, 0) > span[1]:
+            out[key] = float("nan")
     for sensor in SENSORS[:4]:
         out[f"rms_{sensor}"] = rms_against(series, sensor, reference, span)
     return out
