@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "physics_support.hpp"
+
 namespace sluice::testing {
 
 // Columns of one record by name ("time", "P1" ... "P8", and the gauges as the case names its
@@ -79,13 +81,6 @@ inline double first_crossing(const std::vector<double>& t, const std::vector<dou
     return t[k - 1] + (level - v[k - 1]) / (v[k] - v[k - 1]) * (t[k] - t[k - 1]);
   }
   return std::numeric_limits<double>::quiet_NaN();
-}
-
-inline double interpolate(const std::vector<double>& t, const std::vector<double>& v, double at) {
-  if (at <= t.front()) return v.front();
-  if (at >= t.back()) return v.back();
-  const auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
-  return v[k - 1] + (at - t[k - 1]) / (t[k] - t[k - 1]) * (v[k] - v[k - 1]);
 }
 
 // RMS of a series against the reference at the reference's times in [0, end]; a pressure

@@ -3,6 +3,8 @@
 
 #include <omp.h>
 
+#include <algorithm>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +26,15 @@ void run_until(Simulation<D>& sim, double end, Observe&& observe) {
     sim.step(end);
     observe(sim.clock());
   }
+}
+
+// The series v sampled at the increasing times t, read at `at`: linear between samples, held
+// at the ends.
+inline double interpolate(const std::vector<double>& t, const std::vector<double>& v, double at) {
+  if (at <= t.front()) return v.front();
+  if (at >= t.back()) return v.back();
+  const auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
+  return v[k - 1] + (at - t[k - 1]) / (t[k] - t[k - 1]) * (v[k] - v[k - 1]);
 }
 
 // What `run()` returns on one OpenMP thread and then on two (the thread count restored), for

@@ -44,12 +44,7 @@ testing::DamBreakFront testing::dam_break_front(const std::vector<std::string>& 
     int count = 0;
     for (const auto& [t, x] : reference) {
       if (t > 0.70) continue;
-      const double at = std::max(t - delay, 0.0);
-      const auto k = std::max<std::size_t>(
-          1, static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), at) -
-                                      times.begin()));
-      const double w = (at - times[k - 1]) / (times[k] - times[k - 1]);
-      const double simulated = fronts[k - 1] + w * (fronts[k] - fronts[k - 1]);
+      const double simulated = testing::interpolate(times, fronts, std::max(t - delay, 0.0));
       sum2 += (simulated - x) * (simulated - x);
       ++count;
     }
