@@ -50,19 +50,44 @@ void BodyOutput::archive_state(StateArchive& a) {
   for (auto& csv : body_csv_) csv->archive_state(a);
   if (loads_csv_) loads_csv_->archive_state(a);
   energy_csv_->archive_state(a);
+  a(fluid_force_, fluid_moment_, contact_force_, contact_moment_, span_);
+}
+
+void BodyOutput::accumulate(double dt, const RigidBodies& bodies, const Coupler& coupler) {
+  const std::size_t n = bodies.count();
+  if (n == 0) return;
+  if (fluid_force_.size() != n) {
+    for (auto* sums : {&fluid_force_, &fluid_moment_, &contact_force_, &contact_moment_})
+      sums->assign(n, Vec3::Zero());
+  }
+  const auto& system = bodies.system();
+  for (std::size_t b = 0; b < n; ++b) {
+    fluid_force_[b] += dt * coupler.fluid_force()[b];
+    fluid_moment_[b] += dt * coupler.fluid_moment()[b];
+    contact_force_[b] += dt * system.contact_force()[b];
+    contact_moment_[b] += dt * system.contact_torque()[b];
+  }
+  span_ += dt;
 }
 
 void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& coupler,
                         const FluidEnergy& fluid) {
   const auto& system = bodies.system();
+  // The interval's mean of a load, or the load as it stands where no step has been summed.
+  const auto mean = [&](const std::vector<Vec3>& sums, const std::vector<Vec3>& now,
+                        std::size_t b) -> Vec3 {
+    return span_ > 0 && b < sums.size() ? Vec3(sums[b] / span_) : now[b];
+  };
+  std::vector<Vec3> force(bodies.count());
   for (std::size_t b = 0; b < bodies.count(); ++b) {
     const RigidBody& s = bodies.state(b);
     const Eigen::Quaterniond q = bodies.shape_orientation(b);
     const Vec3 w = s.angular_velocity();
-    const Vec3& ff = coupler.fluid_force()[b];
-    const Vec3& fm = coupler.fluid_moment()[b];
-    const Vec3& cf = system.contact_force()[b];
-    const Vec3& cm = system.contact_torque()[b];
+    const Vec3 ff = mean(fluid_force_, coupler.fluid_force(), b);
+    const Vec3 fm = mean(fluid_moment_, coupler.fluid_moment(), b);
+    const Vec3 cf = mean(contact_force_, system.contact_force(), b);
+    const Vec3 cm = mean(contact_moment_, system.contact_torque(), b);
+    force[b] = ff;
     body_csv_[b]->row({time,  s.position[0], s.position[1], s.position[2], q.w(), q.x(), q.y(),
                        q.z(), s.velocity[0], s.velocity[1], s.velocity[2], w[0],  w[1],  w[2],
                        ff[0], ff[1],         ff[2],         fm[0],         fm[1], fm[2], cf[0],
@@ -77,12 +102,15 @@ void BodyOutput::record(double time, const RigidBodies& bodies, const Coupler& c
       if (with_side_) row.push_back(force.dot(side_axis_));
     };
     for (std::size_t b = 0; b < bodies.count(); ++b) {
-      add_loads(coupler.fluid_force()[b]);
-      total += coupler.fluid_force()[b];
+      add_loads(force[b]);
+      total += force[b];
     }
     add_loads(total);
     loads_csv_->row(row);
   }
+  for (auto* sums : {&fluid_force_, &fluid_moment_, &contact_force_, &contact_moment_})
+    std::fill(sums->begin(), sums->end(), Vec3::Zero());
+  span_ = 0;
   const RigidSystemEnergy e = system.energy();
   energy_csv_->row({time, e.kinetic, e.potential, e.elastic, fluid.kinetic, fluid.potential,
                     fluid.elastic, e.total() + fluid.kinetic + fluid.potential + fluid.elastic,

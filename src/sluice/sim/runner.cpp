@@ -179,8 +179,10 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   while (sim.time() < end_time * (1 - 1e-12)) {
     const double until =
         std::min({schedule.next_output, schedule.next_probe, schedule.next_body, end_time});
+    const double before = sim.time();
     sim.step(until);
     const double t = sim.time();
+    body_output->accumulate(t - before, sim.bodies(), sim.coupler());
     std::optional<std::string> problem;
     timers.time(guard_slot, [&] {
       problem = guard.check(sim.clock(), fluid, sim.bodies());
