@@ -15,17 +15,15 @@ usage: /usr/bin/python3 validation/kleefsman_3d.py [--no-run | --resume] [--out 
        /usr/bin/python3 validation/kleefsman_3d.py --variants [--no-run]
            (wcsph's settings compared to 0.7 s, past the first impact: the table f3-variants)
 """
-import json
 import math
 import os
-import subprocess
 
 import matplotlib
 
 matplotlib.use("Agg")
 import kleefsman_figures as f3
 import matplotlib.pyplot as plt
-from runs import ROOT, case_parser, save_figure, write_table
+from runs import ROOT, case_parser, run_model, run_statistics, save_figure, write_table
 
 # Every model at 0.03 m; mac's cells must tile the 3.22 m x 1 m tank, so its coarse run is at
 # 0.02 m, the nearest that does. wcsph and mps also at 0.015 m.
@@ -49,36 +47,6 @@ CI_END = 1.0  # s, the CI checks' run
 
 def run_dir(args, model, spacing):
     return os.path.join(ROOT, f"{args.out}_{model}_{spacing:g}")
-
-
-def run(args, model, spacing, end):
-    """MODEL may carry settings of its own after a '+': wcsph+wall_slip=free_slip."""
-    out = run_dir(args, model, spacing)
-    name, *settings = model.split("+")
-    command = [os.path.join(ROOT, args.sluice), "run", os.path.join(ROOT, "cases",
-                                                                      "kleefsman_3d.yaml")]
-    if args.resume and os.path.isdir(os.path.join(out, "checkpoints")):
-        command += ["--resume", out]
-    else:
-        # The case's model mapping holds wcsph's own settings: another model gets a mapping of
-        # its own.
-        command += ["--out", out, "--set", f"spacing={spacing}", "--set",
-                    f"model.name={name}" if name == "wcsph" else f"model={{name: {name}}}"]
-        command += [item for s in settings for item in ("--set", f"model.{s}")]
-    command += ["--stats", os.path.join(out, "stats.json"), "--end", f"{end:g}"]
-    if args.threads:
-        command += ["--threads", str(args.threads)]
-    # A run that diverges (exit 3) keeps what it wrote; the table says how far it got.
-    subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL)
-
-
-def wall_per_simulated_second(out):
-    """From the run's --stats (a resumed run's covers its last leg), or None."""
-    path = os.path.join(out, "stats.json")
-    if not os.path.exists(path):
-        return None
-    with open(path) as f:
-        return json.load(f).get("wall_seconds_per_simulated_second")
 
 
 def cell(value, digits, scale=1.0):
@@ -204,12 +172,14 @@ def main():
         model, spacing = item.split("@")
         spacing = float(spacing)
         if not args.no_run:
-            run(args, model, spacing, end)
+            run_model("kleefsman_3d", run_dir(args, model, spacing), model, spacing, end, args)
         out = run_dir(args, model, spacing)
         path = os.path.join(out, "probes.csv")
         series = f3.read_probes(path) if os.path.exists(path) else None
         span = (0.0, min(end, float(series["time"][-1]))) if series is not None else (0.0, end)
-        results[(model, spacing)] = (series, span, wall_per_simulated_second(out))
+        statistics = run_statistics(out)
+        results[(model, spacing)] = (series, span,
+                                     statistics and statistics["wall_per_simulated_second"])
 
     if args.variants:
         write_table("validation.md", "f3-variants", table(results, experiment, end))

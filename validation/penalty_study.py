@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """B4 of VALIDATION.md: seed 002's study of the penalty stiffness Ks against the spacing ratio.
 Runs `sluice sweep` over Ks = 5e3, 5e4, 1e5 N/m for the three cases (rain on concrete, ratio
-0.20; water on concrete, 0.61; water on a granular bed, 4.902), prints the table of the share
-held back and the boundary forces beside the paper's shares, and draws
-docs/img/b4_penalty_study.png.
+0.20; water on concrete, 0.61; water on a granular bed, 4.902), writes the table of the share
+held back and the boundary forces beside the paper's shares into docs/validation.md (table b4),
+and draws docs/img/b4_penalty_study.png.
 
 usage: /usr/bin/python3 validation/penalty_study.py [--no-run]
 """
@@ -16,7 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-from runs import ROOT, save_figure
+from runs import ROOT, save_figure, write_table
 
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 STIFFNESSES = "5e3,5e4,1e5"
@@ -42,9 +42,9 @@ def sweep(case):
 
 def main():
     figure, (held, force) = plt.subplots(1, 2, figsize=(11, 4.2))
-    print("| model | spacing ratio | Ks [N/m] | held back (sluice) | held back (paper) "
-          "| mean boundary force [N] | peak boundary force [N] | wall time [s] |")
-    print("|---|---|---|---|---|---|---|---|")
+    lines = ["| model | spacing ratio | Ks [N/m] | held back (sluice) | held back (paper) "
+             "| mean boundary force [N] | peak boundary force [N] | wall time [s] |",
+             "|---|---|---|---|---|---|---|---|"]
     for (case, label, ratio, paper), colour in zip(MODELS, ["C0", "C1", "C2"]):
         rows = sweep(case)
         ks = [float(r["model.Ks"]) for r in rows]
@@ -52,12 +52,14 @@ def main():
         mean = [float(r["mean_boundary_force"]) for r in rows]
         for r, k, s, m in zip(rows, ks, share, mean):
             reported = f"{100 * paper[k]:.2f} %" if k in paper else "–"
-            print(f"| {label} | {ratio} | {k:.0e} | {100 * s:.2f} % | {reported} | {m:.3g} "
-                  f"| {float(r['peak_boundary_force']):.3g} | {float(r['wall_seconds']):.1f} |")
+            lines.append(f"| {label} | {ratio} | {k:.0e} | {100 * s:.2f} % | {reported} | "
+                         f"{m:.3g} | {float(r['peak_boundary_force']):.3g} | "
+                         f"{float(r['wall_seconds']):.1f} |")
         held.plot(ks, [100 * s for s in share], "o-", color=colour, label=label + " (sluice)")
         held.plot(list(paper), [100 * s for s in paper.values()], "x--", color=colour,
                   label=label + " (paper)")
         force.plot(ks, mean, "o-", color=colour, label=label)
+    write_table("validation.md", "b4", "\n".join(lines))
     held.set_xscale("log")
     held.set_xlabel("Ks [N/m]")
     held.set_ylabel("fluid particles held back [%]")

@@ -1,7 +1,10 @@
 """What the validation scripts share: the repository root, the standard command line of a script
-that runs one case (--out, --no-run, --sluice), running that case, reading one body's CSV from
-its output, and saving a figure to docs/img/."""
+that runs one case (--out, --no-run, --sluice), running that case (once, or with one model and
+spacing, resumable), reading one body's CSV from its output, saving a figure to docs/img/ and
+writing a table into a page of docs/."""
 import argparse
+import glob
+import json
 import os
 import subprocess
 import sys
@@ -31,6 +34,53 @@ def run_case(case, args, overrides=(), suffix=""):
                         os.path.join("cases", f"{case}.yaml"), "--out", out] + sets,
                        cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     return out
+
+
+def run_model(case, out, model, spacing, end, args, extra=()):
+    """Runs cases/<case>.yaml into out with model MODEL[+KEY=VALUE...] (each KEY=VALUE sets
+    model.KEY) at the particle spacing (the grid's cell size, for mac) to end seconds, with each
+    "key=value" of extra as a --set too. With
+    args.resume and a checkpoint in out it goes on from the newest. Each leg writes its
+    statistics to out/stats_leg_N.json (wall_per_simulated_second adds them up); args.threads,
+    where set, is the thread count. A run that diverges (exit 3) keeps what it wrote."""
+    name, *settings = model.split("+")
+    command = [os.path.join(ROOT, args.sluice), "run", os.path.join(ROOT, "cases", f"{case}.yaml")]
+    if args.resume and glob.glob(os.path.join(out, "checkpoints", "*.ckpt")):
+        command += ["--resume", out]  # with the same --set values, which the checkpoint checks
+    else:
+        for old in glob.glob(os.path.join(out, "stats_leg_*.json")):
+            os.remove(old)
+        command += ["--out", out]
+    # The cases' own model is wcsph, and their model mapping holds its settings (which it
+    # keeps); another model gets a mapping of its own.
+    model_set = "model.name=wcsph" if name == "wcsph" else f"model={{name: {name}}}"
+    command += ["--set", f"spacing={spacing}", "--set", model_set]
+    command += [item for s in settings for item in ("--set", f"model.{s}")]
+    command += [item for s in extra for item in ("--set", s)]
+    legs = len(glob.glob(os.path.join(out, "stats_leg_*.json")))
+    command += ["--stats", os.path.join(out, f"stats_leg_{legs}.json"), "--end", f"{end:g}"]
+    if args.threads:
+        command += ["--threads", str(args.threads)]
+    subprocess.run(command, cwd=ROOT, stdout=subprocess.DEVNULL)
+
+
+def run_statistics(out):
+    """The steps and wall seconds of every leg of the run in out added up, and the wall seconds
+    per simulated second over them: {"steps", "wall", "wall_per_simulated_second"}, or None
+    where no leg finished. Reads out/stats.json where the run has no legs of its own."""
+    paths = sorted(glob.glob(os.path.join(out, "stats_leg_*.json"))) or \
+        glob.glob(os.path.join(out, "stats.json"))
+    legs = []
+    for path in paths:
+        with open(path) as f:
+            legs.append(json.load(f))
+    if not legs:
+        return None
+    steps = sum(leg["steps"] for leg in legs)
+    wall = sum(leg["wall_seconds"] for leg in legs)
+    simulated = sum(leg["simulated_seconds"] - leg.get("start_seconds", 0) for leg in legs)
+    return {"steps": steps, "wall": wall,
+            "wall_per_simulated_second": wall / simulated if simulated > 0 else None}
 
 
 def require(path):
