@@ -14,7 +14,6 @@ usage: /usr/bin/python3 validation/choosing_a_model.py [--f3 PREFIX] [--b5 PREFI
        (PREFIX: the --out each of those scripts ran with)
 """
 import argparse
-import math
 import os
 
 import compare_models
@@ -38,7 +37,9 @@ def f2_cell(model):
     reference = dam_break_2d.read_reference()
     times, fronts = read_probe(path, "front")
     measured = dam_break_2d.rms_error(times, fronts, reference)[0]
-    delayed = dam_break_2d.best_delay(times, fronts, reference)[0]
+    delayed, delay = dam_break_2d.best_delay(times, fronts, reference)
+    if delay == 0:  # behind the experiment: no delay brings it closer
+        return f"{measured:.3f} / – ({F2_SPACING[model]:g} m; behind the experiment)"
     return f"{measured:.3f} / {delayed:.3f} ({F2_SPACING[model]:g} m)"
 
 
@@ -56,6 +57,8 @@ def f3_cell(model, prefix):
         return "not run"
     series = f3.read_probes(path)
     span = (0.0, min(6.0, float(series["time"][-1])))
+    if span[1] < 1.0:  # short of the first impact's end: nothing to compare yet
+        return f"– (reached {span[1]:.2f} s)"
     mine = f3.figures(series, f3.experiment(), span)
     seed = f3.figures(f3.seed000(0.03), f3.experiment(), span)
     pressures = " / ".join(f"{mine['rms_' + s]:,.0f}" for s in f3.SENSORS[:4])
@@ -64,15 +67,24 @@ def f3_cell(model, prefix):
 
 
 def b5_cells(model, prefix):
+    """The mean drags and the wall time; a run that stopped says where, and for mac the
+    prescribed vehicle's figures follow (its jointed vehicle diverges)."""
     drags, wall = [], "–"
     for spacing in fording_convergence.SPACINGS:
         f = fording_convergence.figures(os.path.join(ROOT, f"{prefix}_{model}_{spacing:g}"))
-        if f is None or math.isnan(f["mean_drag"]):
+        if f is None:
             drags.append("–")
+            continue
+        if f["reached"] < fording_convergence.END:
+            drags.append(f"stopped at {f['reached']:.2f} s")
             continue
         drags.append(f"{f['mean_drag']:.0f}")
         if spacing == fording_convergence.SPACINGS[0]:
             wall = f"{f['wall']:.0f}"
+    if model == "mac":
+        prescribed, prescribed_wall = b5_cells("mac-prescribed", prefix)
+        return (f"{' / '.join(drags)}; every part prescribed: {prescribed}",
+                f"{prescribed_wall} (prescribed)")
     return " / ".join(drags), wall
 
 

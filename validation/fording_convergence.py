@@ -80,6 +80,7 @@ def figures(out):
     statistics = run_statistics(out) or {}
     result["steps"] = statistics.get("steps", math.nan)
     result["wall"] = statistics.get("wall_per_simulated_second") or math.nan
+    result["threads"] = statistics.get("threads", 0)
     return result
 
 
@@ -89,7 +90,7 @@ def cell(value, digits, scale=1.0):
 
 def spacing_table(results, spacing):
     lines = ["| model | reached [s] | mean drag [N] | peak drag [N] | mean lift [N] | peak lift "
-             "[N] | wave at 2 / 3 / 4 m [mm] | steps | wall s per simulated s |",
+             "[N] | wave at 2 / 3 / 4 m [mm] | steps | wall s per simulated s (threads) |",
              "|---|---|---|---|---|---|---|---|---|"]
     for (model, s), f in results.items():
         if s != spacing:
@@ -101,7 +102,7 @@ def spacing_table(results, spacing):
         lines.append(f"| {model} | {f['reached']:.2f} | {cell(f['mean_drag'], 0)} | "
                      f"{cell(f['peak_drag'], 0)} | {cell(f['mean_lift'], 0)} | "
                      f"{cell(f['peak_lift'], 0)} | {waves} | {cell(f['steps'], 0)} | "
-                     f"{cell(f['wall'], 0)} |")
+                     f"{cell(f['wall'], 0)} ({f['threads']}) |")
     return "\n".join(lines)
 
 

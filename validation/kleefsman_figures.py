@@ -77,8 +77,8 @@ def first_crossing(t, v, level, after=0.0):
     if len(above) == 0:
         return float("nan")
     k = above[0]
-    if k == 0:
-        return float(t[0])
+    if k == 0 or v[k - 1] == v[k]:  # at the start, or a jump from exactly the level
+        return float(t[k])
     return float(t[k - 1] + (level - v[k - 1]) / (v[k] - v[k - 1]) * (t[k] - t[k - 1]))
 
 

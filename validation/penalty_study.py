@@ -22,9 +22,9 @@ SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 STIFFNESSES = "5e3,5e4,1e5"
 OUT = os.path.join(ROOT, "out", "validation", "penalty_study")
 MODELS = [  # case, label, spacing ratio, the paper's shares held back (Ks: share)
-    ("seed002_rain_concrete", "model 1: rain on concrete", 0.20, {5e3: 0.0, 5e4: 0.76}),
-    ("seed002_water_concrete", "model 2: water on concrete", 0.61, {5e3: 0.0, 5e4: 0.9968}),
-    ("seed002_water_granular", "model 3: water on a granular bed", 4.902,
+    ("seed002_rain_concrete", "model 1: rain on concrete", "0.20", {5e3: 0.0, 5e4: 0.76}),
+    ("seed002_water_concrete", "model 2: water on concrete", "0.61", {5e3: 0.0, 5e4: 0.9968}),
+    ("seed002_water_granular", "model 3: water on a granular bed", "4.902",
      {5e3: 0.0, 5e4: 1.0, 1e5: 1.0}),
 ]
 
@@ -52,7 +52,8 @@ def main():
         mean = [float(r["mean_boundary_force"]) for r in rows]
         for r, k, s, m in zip(rows, ks, share, mean):
             reported = f"{100 * paper[k]:.2f} %" if k in paper else "–"
-            lines.append(f"| {label} | {ratio} | {k:.0e} | {100 * s:.2f} % | {reported} | "
+            stiffness = f"{k:.0e}".replace("e+0", "e")
+            lines.append(f"| {label} | {ratio} | {stiffness} | {100 * s:.2f} % | {reported} | "
                          f"{m:.3g} | {float(r['peak_boundary_force']):.3g} | "
                          f"{float(r['wall_seconds']):.1f} |")
         held.plot(ks, [100 * s for s in share], "o-", color=colour, label=label + " (sluice)")

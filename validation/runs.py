@@ -65,8 +65,9 @@ def run_model(case, out, model, spacing, end, args, extra=()):
 
 
 def run_statistics(out):
-    """The steps and wall seconds of every leg of the run in out added up, and the wall seconds
-    per simulated second over them: {"steps", "wall", "wall_per_simulated_second"}, or None
+    """The steps and wall seconds of every leg of the run in out added up, the wall seconds per
+    simulated second over them, and the most threads a leg ran on: {"steps", "wall",
+    "wall_per_simulated_second", "threads"}, or None
     where no leg finished. Reads out/stats.json where the run has no legs of its own."""
     paths = sorted(glob.glob(os.path.join(out, "stats_leg_*.json"))) or \
         glob.glob(os.path.join(out, "stats.json"))
@@ -79,7 +80,7 @@ def run_statistics(out):
     steps = sum(leg["steps"] for leg in legs)
     wall = sum(leg["wall_seconds"] for leg in legs)
     simulated = sum(leg["simulated_seconds"] - leg.get("start_seconds", 0) for leg in legs)
-    return {"steps": steps, "wall": wall,
+    return {"steps": steps, "wall": wall, "threads": max(leg["threads"] for leg in legs),
             "wall_per_simulated_second": wall / simulated if simulated > 0 else None}
 
 
