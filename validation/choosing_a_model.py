@@ -76,7 +76,7 @@ def b5_cells(model, prefix):
             drags.append("–")
             continue
         if f["reached"] < fording_convergence.END:
-            drags.append(f"stopped at {f['reached']:.2f} s")
+            drags.append(f"to {f['reached']:.2f} s only")
             continue
         drags.append(f"{f['mean_drag']:.0f}")
         if spacing == fording_convergence.SPACINGS[0]:

@@ -22,7 +22,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from probes_csv import read_probe
-from runs import ROOT, case_parser, run_model, run_statistics, save_figure, write_table
+from runs import (ROOT, each_run, model_runs_parser, run_model, run_statistics, save_figure,
+                  write_table)
 
 MODELS = ("wcsph", "mps", "penalty-sph", "constraint", "mac", "granular", "mac-prescribed")
 # mac's projection couples free bodies (Batty et al. 2007) but not the joints and contacts that
@@ -160,16 +161,10 @@ def plot(results):
 
 
 def main():
-    parser = case_parser("fording", __doc__.splitlines()[0])
-    parser.set_defaults(out=os.path.join("out", "validation", "fording"))
-    parser.add_argument("--runs", default=RUNS, help="MODEL@SPACING,...")
-    parser.add_argument("--resume", action="store_true", help="go on from each run's checkpoint")
-    parser.add_argument("--threads", type=int, default=0)
+    parser = model_runs_parser("fording", __doc__.splitlines()[0], RUNS)
     args = parser.parse_args()
     results = {}
-    for item in args.runs.split(","):
-        model, spacing = item.split("@")
-        spacing = float(spacing)
+    for model, spacing in each_run(args.runs):
         out = run_dir(args, model, spacing)
         if not args.no_run:
             name, extra = VARIANTS.get(model, (model, []))

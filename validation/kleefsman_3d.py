@@ -23,7 +23,8 @@ import matplotlib
 matplotlib.use("Agg")
 import kleefsman_figures as f3
 import matplotlib.pyplot as plt
-from runs import ROOT, case_parser, run_model, run_statistics, save_figure, write_table
+from runs import (ROOT, each_run, model_runs_parser, run_model, run_statistics, save_figure,
+                  write_table)
 
 # Every model at 0.03 m; mac's cells must tile the 3.22 m x 1 m tank, so its coarse run is at
 # 0.02 m, the nearest that does. wcsph and mps also at 0.015 m.
@@ -155,11 +156,7 @@ def plot(results, experiment, names, title, filename, scale, unit, zoom=None):
 
 
 def main():
-    parser = case_parser("kleefsman_3d", __doc__.splitlines()[0])
-    parser.set_defaults(out=os.path.join("out", "validation", "kleefsman_3d"))
-    parser.add_argument("--runs", default=RUNS, help="MODEL@SPACING,...")
-    parser.add_argument("--resume", action="store_true", help="go on from each run's checkpoint")
-    parser.add_argument("--threads", type=int, default=0)
+    parser = model_runs_parser("kleefsman_3d", __doc__.splitlines()[0], RUNS)
     parser.add_argument("--variants", action="store_true",
                         help="wcsph's settings to 0.7 s (table f3-variants, no plots)")
     args = parser.parse_args()
@@ -168,9 +165,7 @@ def main():
         args.out += "_variants"
     experiment = f3.experiment()
     results = {}
-    for item in runs.split(","):
-        model, spacing = item.split("@")
-        spacing = float(spacing)
+    for model, spacing in each_run(runs):
         if not args.no_run:
             run_model("kleefsman_3d", run_dir(args, model, spacing), model, spacing, end, args)
         out = run_dir(args, model, spacing)

@@ -84,7 +84,8 @@ def main():
         bottom = "–" if math.isnan(tank["bottom"]) else \
             f"{100 * (tank['bottom'] / RHO_G_H - 1):+.1f} %, {tank['level']:.3f}"
         default = ", the default" if (form, alpha) == ("rate", WATER) else ""
-        lines.append(f"| `{form}`{default}, {alpha:g} {NAMES.get(alpha, '')} | {rms} | {bottom} |")
+        name = f"{alpha:g} {NAMES.get(alpha, '')}".strip()
+        lines.append(f"| `{form}`{default}, {name} | {rms} | {bottom} |")
     write_table("validation.md", "mps-compressibility", "\n".join(lines))
 
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))

@@ -36,6 +36,25 @@ def run_case(case, args, overrides=(), suffix=""):
     return out
 
 
+def model_runs_parser(case, description, runs):
+    """The parser of a script that runs cases/<case>.yaml with several models and spacings:
+    case_parser's options (--out defaulting to out/validation/<case>), --runs (MODEL@SPACING,...,
+    default `runs`), --resume and --threads."""
+    parser = case_parser(case, description)
+    parser.set_defaults(out=os.path.join("out", "validation", case))
+    parser.add_argument("--runs", default=runs, help="MODEL@SPACING,...")
+    parser.add_argument("--resume", action="store_true", help="go on from each run's checkpoint")
+    parser.add_argument("--threads", type=int, default=0)
+    return parser
+
+
+def each_run(runs):
+    """(model, spacing) for each MODEL@SPACING of the comma-separated runs."""
+    for item in runs.split(","):
+        model, spacing = item.split("@")
+        yield model, float(spacing)
+
+
 def run_model(case, out, model, spacing, end, args, extra=()):
     """Runs cases/<case>.yaml into out with model MODEL[+KEY=VALUE...] (each KEY=VALUE sets
     model.KEY) at the particle spacing (the grid's cell size, for mac) to end seconds, with each
