@@ -5,7 +5,6 @@
 // length: the impulse over the interval divided by it. The step that lands on a row's time is
 // shortened, and a shortened step's load can be far from the steps' around it (a constraint
 // fluid's drag on the fording vehicle reads near 0 N there against 200-500 N on the others).
-
 #pragma once
 
 #include <memory>
