@@ -7,7 +7,7 @@ docs/img/b5_fording_convergence.png (drag and lift, 0.05 s running means).
 
 Drag and lift are the water's force on the chassis and the four wheels together; a mean is over
 every row from 0.5 to 2 s (the carriage's ramp ends at 0.3 s), a peak the largest 0.05 s running
-mean after t = 0; a wave is the largest rise of a gauge above its start. A run lives in
+mean over the same span; a wave is the largest rise of a gauge above its start. A run lives in
 OUT_MODEL_SPACING (OUT: --out) and goes on from its newest checkpoint with --resume.
 
 usage: /usr/bin/python3 validation/fording_convergence.py [--no-run | --resume] [--out DIR]
@@ -74,7 +74,10 @@ def figures(out):
         v = loads[f"all_bodies_{load}"]
         result[f"{load}_series"] = running_mean(t[later], v[later])
         result[f"mean_{load}"] = v[window].mean() if t[-1] >= END else math.nan
-        result[f"peak_{load}"] = result[f"{load}_series"].max()
+        # Over the same span: before it the vehicle settles and the ramp ends, a transient
+        # that is not the fording's.
+        result[f"peak_{load}"] = result[f"{load}_series"][window[later]].max() \
+            if t[-1] >= MEAN_FROM else math.nan
     for gauge in GAUGES:
         times, heights = read_probe(os.path.join(out, "probes.csv"), gauge)
         result[gauge] = max(heights) - heights[0]
