@@ -19,7 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from probes_csv import read_probe
-from runs import ROOT, save_figure, write_table
+from runs import ROOT, each_run, save_figure, write_table
 
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 REFERENCE = os.path.join(ROOT, "validation", "data", "dam_break_front_koshizuka_oka_1996.tsv")
@@ -90,9 +90,7 @@ def main():
     lines = ["| model | spacing [m] | (a) RMS as measured [m] | (b) RMS, experiment delayed "
              "[m] | fitted delay [s] | wall s per simulated s |", "|---|---|---|---|---|---|"]
     coarse = {}
-    for item in args.runs.split(","):
-        model, spacing = item.split("@")
-        spacing = float(spacing)
+    for model, spacing in each_run(args.runs):
         if not args.no_run:
             run(model, spacing)
         out = out_dir(model, spacing)

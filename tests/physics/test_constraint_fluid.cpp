@@ -35,7 +35,8 @@ std::pair<std::size_t, std::size_t> fluid_and_outside(const ParticleSet<2>& ps, 
 
 // The still tank's depth, a measure of compression independent of the constraint model's own
 // density sums: the mean over the columns x in [0.2, 0.8] m (one spacing wide) of the highest
-// fluid particle's height plus half a spacing, averaged over every step from 1.5 to 2 s.
+// fluid particle's height plus half a spacing. still_depth averages it over every step from 1.5
+// to 2 s.
 double mean_surface_height(const ParticleSet<2>& ps, double dx) {
   const int columns = static_cast<int>(std::lround(0.6 / dx));
   std::vector<double> top(static_cast<std::size_t>(columns), -1.0);
@@ -71,7 +72,7 @@ double depth_measure_error(const std::string& spacing) {
   return std::abs(still_depth(wcsph) - depth * (1 - g * depth / (2 * c0 * c0))) / depth;
 }
 
-// The bar on the constraint fluid's compression by the depth: 2 %, eight times the measure's
+// The bar on the constraint fluid's compression by the depth: 2 %, nearly eight times the measure's
 // error (0.25-0.26 % at 0.05 and 0.025 m). The model's own bar, 1 % on the kernel-summed density,
 // is not met by this measure at 0.05 m (docs/validation.md, constraint fluids).
 constexpr double kDepthCompressionBar = 0.02;
