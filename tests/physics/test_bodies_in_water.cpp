@@ -8,10 +8,13 @@
 #include <numbers>
 
 #include "physics_support.hpp"
+#include "reported_figure.hpp"
 
 namespace sluice {
 namespace {
 
+using testing::Bound;
+using testing::expect_figure;
 using testing::load_case;
 using testing::run_until;
 
@@ -48,8 +51,10 @@ TEST(CaseHertzImpact, ContactTimeAndPeakOverlap) {
   const double duration = last - first + sim.config().body_interval;
   std::printf("C2 (case): contact %.4f ms (Hertz %.4f), peak overlap %.4f mm (Hertz %.4f)\n",
               1e3 * duration, 1e3 * t_c, 1e3 * deepest, 1e3 * peak);
-  EXPECT_NEAR(duration, t_c, 0.05 * t_c);
-  EXPECT_NEAR(deepest, peak, 0.05 * peak);
+  expect_figure({"C2 contact time against Hertz's", "%", 2}, 100 * (duration / t_c - 1),
+                Bound::within, 5);
+  expect_figure({"C2 peak overlap against Hertz's", "%", 2}, 100 * (deepest / peak - 1),
+                Bound::within, 5);
 }
 
 }  // namespace
@@ -83,8 +88,10 @@ void floating_box_draft(const std::string& model, double drift_bar = 0.01) {
   std::printf(
       "B1 (case, %s): mean draft %.4f m (Archimedes 0.70, %.2f %%), sideways drift %.3g mm\n",
       model.c_str(), draft, 100 * (draft - 0.7) / 0.7, 1e3 * drift);
-  EXPECT_NEAR(draft, 0.7, 0.03 * 0.7);
-  EXPECT_LT(drift, drift_bar);
+  const std::string name = model == "wcsph" ? "B1" : "B1 `" + model + "`";
+  expect_figure({name + " draft against 0.70 m", "%", 2}, 100 * (draft - 0.7) / 0.7, Bound::within,
+                3);
+  expect_figure({name + " sideways drift", "mm", 2}, 1e3 * drift, Bound::below, 1e3 * drift_bar);
 }
 
 TEST(CaseFloatingBox, DraftByArchimedes) {
@@ -116,9 +123,12 @@ TEST(CaseFallingCube, SinksAndRestsOnTheFloor) {
   const auto& s = sim.bodies().state(0);
   std::printf("B2 (case): cube bottom at %.3g mm at the end, lowest %.3g mm, speed %.3g mm/s\n",
               1e3 * (s.position[2] - half), 1e3 * lowest, 1e3 * s.velocity.norm());
-  EXPECT_GT(lowest, -0.1 * dx);
-  EXPECT_LT(s.position[2] - half, 0.1 * dx);
-  EXPECT_LT(s.velocity.norm(), 0.01);
+  expect_figure({"B2 cube, deepest below the floor", "mm", 3}, 1e3 * lowest, Bound::above,
+                -1e3 * 0.1 * dx);
+  expect_figure({"B2 cube, above the floor at the end", "mm", 3}, 1e3 * (s.position[2] - half),
+                Bound::below, 1e3 * 0.1 * dx);
+  expect_figure({"B2 cube, speed at the end", "mm/s", 3}, 1e3 * s.velocity.norm(), Bound::below,
+                10);
 }
 
 // B2: the light block floats: it never touches the floor and keeps its draft near Archimedes'.
@@ -140,8 +150,10 @@ TEST(CaseFloatingBlock, Floats) {
       "B2 (case): block lowest bottom %.3g mm above the floor, mean draft %.4g mm "
       "(Archimedes %.4g)\n",
       1e3 * lowest, 1e3 * draft, 1e3 * archimedes);
-  EXPECT_GT(lowest, 0.25 * water);
-  EXPECT_NEAR(draft, archimedes, 0.1 * archimedes);
+  expect_figure({"B2 block, lowest above the floor", "mm", 2}, 1e3 * lowest, Bound::above,
+                1e3 * 0.25 * water);
+  expect_figure({"B2 block draft against Archimedes'", "%", 2}, 100 * (draft / archimedes - 1),
+                Bound::within, 10);
 }
 
 // B3: dam break on six cubes at a coarse spacing to 1.5 s: no interpenetration beyond a tenth of
@@ -172,9 +184,10 @@ TEST(CaseDamBreakCubes, SixCubesStaySound) {
       "B3 (case): deepest overlap %.3g mm (%.3g dx), largest energy rise %.3g %% of the "
       "start, energy %.1f -> %.1f J, largest body displacement %.3g m\n",
       1e3 * overlap, overlap / dx, 100 * worst_rise / start, start, total_energy(sim), moved);
-  EXPECT_LT(overlap, 0.1 * dx);
+  expect_figure({"B3 deepest overlap", "spacings", 4}, overlap / dx, Bound::below, 0.1);
   EXPECT_TRUE(inside);
-  EXPECT_LT(worst_rise, 0.005 * start);
+  expect_figure({"B3 largest energy rise", "% of the start", 3}, 100 * worst_rise / start,
+                Bound::below, 0.5);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "physics_support.hpp"
+#include "reported_figure.hpp"
 #include "sluice/fluid/constraint/constraint_model.hpp"
 #include "sluice/fluid/wcsph/wcsph_parameters.hpp"
 
@@ -83,8 +84,11 @@ void check_depth(double dx, double constraint_depth, double measure_error) {
       "F1 depth at dx %.3g m: the measure reads wcsph %.3f %% off its equation of state; "
       "constraint %.5f m, compression %+.3f %%\n",
       dx, 100 * measure_error, constraint_depth, 100 * compression);
-  EXPECT_LT(measure_error, kDepthCompressionBar / 3);
-  EXPECT_LT(std::abs(compression), kDepthCompressionBar);
+  const std::string at = fmt::format(", {} m", dx);
+  testing::expect_figure({"depth measure's error on `wcsph`" + at, "%", 3}, 100 * measure_error,
+                         testing::Bound::below, 100 * kDepthCompressionBar / 3);
+  testing::expect_figure({"`constraint` depth compression" + at, "%", 3}, 100 * compression,
+                         testing::Bound::within, 100 * kDepthCompressionBar);
 }
 
 // F1: the pressure the constraint impulses give at the floor (dx gamma / (h V), the probe's
@@ -118,7 +122,8 @@ TEST(ConstraintFluid, HydrostaticBottomPressure) {
       "steps; largest speed over 1.5-2 s %.4f m/s (%.4f sqrt(gH)); largest density error %.4f %%\n",
       mean, expected, 100 * (mean / expected - 1), samples, fastest, fastest / std::sqrt(g * depth),
       100 * constraint_model(sim).largest_density_error());
-  EXPECT_NEAR(mean, expected, 0.03 * expected);
+  testing::expect_figure({"F1 `constraint` bottom pressure against rho g H", "%", 2},
+                         100 * (mean / expected - 1), testing::Bound::within, 3);
   EXPECT_EQ(fluid_now, fluid);
   EXPECT_EQ(outside, 0u);
   check_depth(config.spacing, surface / double(samples), depth_measure_error("spacing=0.025"));
@@ -151,8 +156,10 @@ TEST(ConstraintFluid, DensityErrorAtFiveTimesTheWcsphStep) {
       "F2 (constraint): mean step %.3g s against WCSPH's %.3g s (%.1f times); largest density "
       "error %.3f %%\n",
       step, wcsph_step, step / wcsph_step, 100 * error);
-  EXPECT_GE(step, 5 * wcsph_step);
-  EXPECT_LT(error, 0.01);
+  testing::expect_figure({"F2 `constraint` mean step / `wcsph`'s", "", 1}, step / wcsph_step,
+                         testing::Bound::above, 5);
+  testing::expect_figure({"F2 `constraint` largest density error", "%", 3}, 100 * error,
+                         testing::Bound::below, 1);
   EXPECT_EQ(fluid_and_outside(sim.state().particles, 4.0).first, fluid);
 }
 

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "physics_support.hpp"
+#include "reported_figure.hpp"
 #include "sluice/fluid/granular/granular_model.hpp"
 
 namespace sluice {
@@ -45,7 +46,8 @@ TEST(Granular, PoolAtRestPressesWithItsWeight) {
   const double mean = impulse / duration;
   std::printf("granular pool: floor carries %.5g N/m, weight %.5g N/m (%+.3f %%)\n", mean, weight,
               100 * (mean / weight - 1));
-  EXPECT_NEAR(mean, weight, 0.01 * weight);
+  testing::expect_figure({"`granular` pool, the floor's load against the weight", "%", 3},
+                         100 * (mean / weight - 1), testing::Bound::within, 1);
 }
 
 // Same answer on one and two threads, bit for bit: the sphere contacts are found block by
@@ -169,8 +171,11 @@ void expect_runout(double a, double low, double high) {
       "column collapse a = %g: (L_inf - L0)/L0 = %.3f (Lube: 1.2 a = %.3f, 1.9 a^(2/3) = "
       "%.3f; bar %.3f-%.3f)\n",
       a, runout, 1.2 * a, 1.9 * std::pow(a, 2.0 / 3), low, high);
-  EXPECT_GT(runout, low);
-  EXPECT_LT(runout, high);
+  const std::string name = fmt::format("column collapse a = {}, (L_inf - L0)/L0", a);
+  testing::expect_figure({name + ", the band's low end", "", 3}, runout, testing::Bound::above,
+                         low);
+  testing::expect_figure({name + ", the band's high end", "", 3}, runout, testing::Bound::below,
+                         high);
 }
 
 TEST(Granular, ColumnCollapseRunoutLowColumn) {

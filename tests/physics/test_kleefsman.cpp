@@ -20,6 +20,7 @@
 
 #include "kleefsman_series.hpp"
 #include "physics_support.hpp"
+#include "reported_figure.hpp"
 #include "sluice/sim/probes.hpp"
 
 namespace sluice {
@@ -79,8 +80,12 @@ void check_against_the_experiment(const std::string& model, const HeldTo& held) 
     std::printf("F3 %s: %s first wet at %.4f s (experiment %.4f s, %+.4f s; bar 0.05 s%s)\n",
                 model.c_str(), gauges[k], mine, theirs, mine - theirs,
                 held.wet[k] ? "" : ", a limit");
+    const testing::Figure wet{
+        fmt::format("F3 `{}` first wet at {} against the experiment", model, gauges[k]), "s", 4};
     if (held.wet[k]) {
-      EXPECT_NEAR(mine, theirs, 0.05) << gauges[k];
+      testing::expect_figure(wet, mine - theirs, testing::Bound::within, 0.05);
+    } else {
+      testing::report_limit(wet, mine - theirs, testing::Bound::within, 0.05);
     }
   }
   const double rise = testing::first_crossing(t, testing::running_mean(t, run.at("P1")), 2000);
@@ -89,20 +94,28 @@ void check_against_the_experiment(const std::string& model, const HeldTo& held) 
   std::printf("F3 %s: P1 rises above 2 kPa at %.4f s (experiment %.4f s, %+.4f s; bar 0.05 s%s)\n",
               model.c_str(), rise, rise_experiment, rise - rise_experiment,
               held.p1_rise ? "" : ", a limit");
+  const testing::Figure p1{fmt::format("F3 `{}` P1's rise against the experiment", model), "s", 4};
   if (held.p1_rise) {
-    EXPECT_NEAR(rise, rise_experiment, 0.05);
+    testing::expect_figure(p1, rise - rise_experiment, testing::Bound::within, 0.05);
+  } else {
+    testing::report_limit(p1, rise - rise_experiment, testing::Bound::within, 0.05);
   }
   const double reservoir = testing::rms_against(run, experiment, "g2638", kEnd);
   std::printf("F3 %s: reservoir gauge RMS %.4f m\n", model.c_str(), reservoir);
-  EXPECT_LT(reservoir, 0.03);
+  testing::expect_figure({fmt::format("F3 `{}` reservoir gauge RMS", model), "m", 4}, reservoir,
+                         testing::Bound::below, 0.03);
   const char* sensors[] = {"P1", "P2", "P3", "P4"};
   for (int k = 0; k < 4; ++k) {
     const double mine = testing::rms_against(run, experiment, sensors[k], kEnd);
     const double seeds = testing::rms_against(seed, experiment, sensors[k], kEnd);
     std::printf("F3 %s: %s RMS %.0f Pa (seed 000 at 0.03 m: %.0f Pa%s)\n", model.c_str(),
                 sensors[k], mine, seeds, held.pressure[k] ? "" : "; a limit");
+    const testing::Figure rms{
+        fmt::format("F3 `{}` {} RMS against seed 000's at 0.03 m", model, sensors[k]), "Pa", 0};
     if (held.pressure[k]) {
-      EXPECT_LE(mine, seeds) << sensors[k];
+      testing::expect_figure(rms, mine, testing::Bound::below, seeds);
+    } else {
+      testing::report_limit(rms, mine, testing::Bound::below, seeds);
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "physics_support.hpp"
+#include "reported_figure.hpp"
 
 namespace sluice {
 namespace {
@@ -105,8 +106,10 @@ TEST(Joints, RevolutePendulumHasTheExactPeriod) {
       joint_error(sim.bodies().system().rigid().joints()[0], sim.bodies().system().bodies());
   std::printf("pendulum: period %.6f s, exact %.6f s (%+.4f %%); joint error %.3g m, %.3g rad\n",
               period, exact, 100 * (period / exact - 1), error.distance, error.angle);
-  EXPECT_NEAR(period, exact, 0.005 * exact);
-  EXPECT_LT(error.distance, 1e-4);
+  testing::expect_figure({"pendulum period against the exact", "%", 4}, 100 * (period / exact - 1),
+                         testing::Bound::within, 0.5);
+  testing::expect_figure({"pendulum joint error", "mm", 4}, 1e3 * error.distance,
+                         testing::Bound::below, 0.1);
 }
 
 // A motor spins a wheel at its set speed (5 rad/s about y).

@@ -14,6 +14,7 @@
 #include <map>
 
 #include "physics_support.hpp"
+#include "reported_figure.hpp"
 
 namespace sluice {
 namespace {
@@ -98,8 +99,10 @@ TEST(PenaltyStudy, ImpactForceGrowsAsTheSquareRootOfTheStiffness) {
   const double n = static_cast<double>(stiffnesses.size());
   const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   const double r = (n * sxy - sx * sy) / std::sqrt((n * sxx - sx * sx) * (n * syy - sy * sy));
-  EXPECT_NEAR(slope, 0.5, 0.1);
-  EXPECT_GT(r * r, 0.95);
+  testing::expect_figure({"B4 peak force against log Ks, slope - 0.5", "", 3}, slope - 0.5,
+                         testing::Bound::within, 0.1);
+  testing::expect_figure({"B4 peak force against log Ks, R^2", "", 5}, r * r, testing::Bound::above,
+                         0.95);
 }
 
 // The bodies feel the reaction of the boundary forces the fluid felt in its sub-steps: water

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "physics_support.hpp"
+#include "reported_figure.hpp"
 #include "sluice/io/csv_table.hpp"
 #include "sluice/sim/runner.hpp"
 #include "support/scratch_dir.hpp"
@@ -40,7 +41,8 @@ TEST(Vehicle, KeepsItsSpeedAndItsWheelsRollOnDryGround) {
   const double chassis_speed = chassis_speed_sum / double(samples);
   std::printf("vehicle: chassis speed %.6f m/s (set %.3g), worst %.3g %% off\n", chassis_speed,
               set_speed, 100 * worst_speed_error);
-  EXPECT_LT(worst_speed_error, 0.005);
+  testing::expect_figure({"vehicle chassis speed, the worst against the set one", "%", 3},
+                         100 * worst_speed_error, testing::Bound::below, 0.5);
   for (int w = 0; w < 4; ++w) {
     const double rim_speed = wheel_rate_sum[w] / double(samples) * radius;
     std::printf("  wheel %d: omega r = %.6f m/s, %.3g %% off the chassis\n", w, rim_speed,
@@ -135,7 +137,8 @@ TEST(Vehicle, LoadRowsAreMeansOverTheirIntervals) {
       "towed box (constraint): mean drag of loads.csv's rows %.1f N/m, over every step "
       "%.1f N/m (%+.2f %%)\n",
       rows, every_step, 100 * (rows / every_step - 1));
-  EXPECT_NEAR(rows, every_step, 0.03 * every_step);
+  testing::expect_figure({"towed box's drag, loads.csv's rows against every step", "%", 2},
+                         100 * (rows / every_step - 1), testing::Bound::within, 3);
 }
 
 }  // namespace
