@@ -4,8 +4,11 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "child_runs.hpp"
 #include "compare_command.hpp"
@@ -134,11 +137,15 @@ int main(int argc, char** argv) {
     }
     sluice::exec::set_thread_count(threads);
     if (!device.empty() && device != "cpu") {
-      // model.device is the wcsph model's key: name the option, not an unknown key.
-      const std::string model = sluice::io::read_case(case_path, overrides).model_name;
-      if (model != "wcsph") {
-        fmt::print(stderr, "error: --device: the {} device runs the wcsph model only, not '{}'\n",
-                   device, model);
+      // model.device is a key of the models that run elsewhere than on the CPU: for another
+      // model, name the option, not an unknown key.
+      const sluice::io::CaseConfig plain = sluice::io::read_case(case_path, overrides);
+      const std::vector<std::string> models =
+          sluice::shipped_models(plain.dimension).names_on(device);
+      if (std::find(models.begin(), models.end(), plain.model_name) == models.end()) {
+        fmt::print(stderr, "error: --device: the {} device runs the {} model{} only, not '{}'\n",
+                   device, fmt::join(models, ", "), models.size() == 1 ? "" : "s",
+                   plain.model_name);
         return sluice::kExitBadInput;
       }
       overrides.push_back("model.device=" + device);

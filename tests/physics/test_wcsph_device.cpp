@@ -133,7 +133,7 @@ TEST(WcsphDevice, WaterThrownAtTheFloorIsKeptOutOfItOnTheDeviceToo) {
 TEST(WcsphDevice, GpuRefusedWithTheReasonWhereNoneIsFound) {
   std::string why;
   if (wcsph_device_available(WcsphDevice::kGpu, why)) GTEST_SKIP() << "a GPU is here";
-  EXPECT_EQ(device_memory(WcsphDevice::kGpu).free_bytes, 0);  // unknown: no refusal by size
+  EXPECT_EQ(exec::gpu_memory().free_bytes, 0);  // unknown: no refusal by size
   try {
     Simulation<2> sim(testing::load_case("dam_break_2d.yaml", {"model.device=gpu"}));
     FAIL() << "a run on the GPU started without one";
@@ -168,7 +168,7 @@ TEST(WcsphGpu, BackendAgreesWithTheHost) {
 // times of it is refused at its spacing, naming the GPU, before anything is built.
 TEST(WcsphGpu, ACaseTooLargeForTheGpusMemoryIsRefusedAtItsSpacing) {
   if (!gpu_here()) GTEST_SKIP() << "no GPU";
-  const DeviceMemory gpu = device_memory(WcsphDevice::kGpu);
+  const exec::DeviceMemory gpu = exec::gpu_memory();
   std::printf("%s: %.3g GB free\n", gpu.name.c_str(), gpu.free_bytes / 1e9);
   EXPECT_GT(gpu.free_bytes, 1e9);
   EXPECT_NE(gpu.name.find("(CUDA)"), std::string::npos) << gpu.name;

@@ -2,52 +2,66 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "sluice/fluid/body_particles.hpp"
 #include "sluice/fluid/constraint/constraint_factory.hpp"
-#include "sluice/fluid/constraint/constraint_parameters.hpp"
 #include "sluice/fluid/granular/granular_factory.hpp"
-#include "sluice/fluid/granular/granular_parameters.hpp"
 #include "sluice/fluid/mac/mac_factory.hpp"
 #include "sluice/fluid/mps/mps_factory.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_factory.hpp"
-#include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/wcsph/wcsph_factory.hpp"
 
 namespace sluice {
 
 std::vector<std::string> ModelRegistry::names() const {
   std::vector<std::string> out;
-  for (const auto& entry : factories_) out.push_back(entry.first);
+  for (const auto& entry : entries_) out.push_back(entry.first);
   return out;
+}
+
+std::vector<std::string> ModelRegistry::names_on(const std::string& device) const {
+  std::vector<std::string> out;
+  for (const auto& [name, entry] : entries_) {
+    if (std::find(entry.devices.begin(), entry.devices.end(), device) != entry.devices.end())
+      out.push_back(name);
+  }
+  return out;
+}
+
+const ModelEntry* ModelRegistry::find(const std::string& name) const {
+  const auto found = entries_.find(name);
+  return found != entries_.end() ? &found->second : nullptr;
 }
 
 std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                                                  const BodyGeometry& bodies) const {
-  if (const auto found = factories_.find(config.model_name); found != factories_.end())
-    return found->second.make(config, bodies);
+  if (const ModelEntry* entry = find(config.model_name)) return entry->make(config, bodies);
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.fail_choice("name", "model", config.model_name, names());
 }
 
 io::CaseConfig ModelRegistry::prepared(io::CaseConfig config) const {
   if (!config.has_fluid()) return config;
-  const auto found = factories_.find(config.model_name);
-  if (found != factories_.end() && found->second.prepare) found->second.prepare(config);
+  const ModelEntry* entry = find(config.model_name);
+  if (entry != nullptr && entry->prepare) entry->prepare(config);
   return config;
 }
 
 template <int D>
 ModelRegistry shipped_models() {
   ModelRegistry registry;
-  registry.add("wcsph", make_wcsph<D>);
-  registry.add("mps", make_mps<D>);
-  registry.add("penalty-sph", make_penalty_sph<D>, [](io::CaseConfig& config) {
-    for (io::BodyConfig& b : free_solid_grains(config)) config.bodies.push_back(std::move(b));
-  });
-  registry.add("granular", make_granular<D>, prepare_granular_case);
-  registry.add("constraint", make_constraint<D>, prepare_constraint_case);
-  registry.add("mac", make_mac<D>);
+  registry.add("wcsph", wcsph_entry<D>());
+  registry.add("mps", mps_entry<D>());
+  registry.add("penalty-sph", penalty_sph_entry<D>());
+  registry.add("granular", granular_entry<D>());
+  registry.add("constraint", constraint_entry<D>());
+  registry.add("mac", mac_entry<D>());
   return registry;
+}
+
+ModelRegistry shipped_models(int dimension) {
+  return dimension == 2 ? shipped_models<2>() : shipped_models<3>();
 }
 
 template <int D>

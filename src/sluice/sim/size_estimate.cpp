@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "sluice/core/errors.hpp"
 #include "sluice/core/types.hpp"
@@ -16,15 +15,9 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 
-// Resident memory per element, measured as the slope of peak RSS between the 3D dam break at
-// 0.025 m and at 0.0125 m (15,540 and 74,292 particles; docs/output.md), rounded up.
-double bytes_per_element(const std::string& model) {
-  static const std::map<std::string, double> measured = {{"wcsph", 500},       {"mps", 800},
-                                                         {"penalty-sph", 550}, {"granular", 900},
-                                                         {"constraint", 6000}, {"mac", 400}};
-  const auto found = measured.find(model);
-  return found != measured.end() ? found->second : 6000;  // unknown: the largest
-}
+// A case of bodies alone keeps their surface particles in the particle base's fields, as
+// `wcsph` keeps its own (docs/output.md).
+constexpr double kBodyParticleBytes = 500;
 
 // Product of the box's extents along the case's axes (2D: x and z).
 double measure(const Vec3& extent, int dimension) {
@@ -66,19 +59,22 @@ double body_volume(const io::BodyConfig& b, int dimension) {
 }  // namespace
 
 SizeEstimate estimate_size(const io::CaseConfig& config) {
+  return estimate_size(config, shipped_models(config.dimension));
+}
+
+SizeEstimate estimate_size(const io::CaseConfig& config, const ModelRegistry& models) {
   SizeEstimate out;
   const int dim = config.dimension;
   const double dx = config.spacing;
   const double cell_volume = std::pow(dx, dim);
-  if (config.has_fluid() && config.model_name == "mac") {
-    // The model's own reader reports a bad cell_size; until then the spacing stands in.
-    double h = dx;
-    if (config.model["cell_size"]) h = config.model["cell_size"].as<double>(dx);
-    if (!(std::isfinite(h) && h > 0)) h = dx;
-    out.element_name = "cells";
-    out.elements = lattice_points(config.domain.max - config.domain.min, h, dim);
+  const ModelEntry* model = config.has_fluid() ? models.find(config.model_name) : nullptr;
+  ModelSize size;  // an unknown model: the largest bytes per element
+  if (model != nullptr) size = model->size;
+  if (!config.has_fluid()) size.bytes_per_element = kBodyParticleBytes;
+  out.element_name = size.element_name;
+  if (size.elements) {
+    out.elements = size.elements(config);
   } else {
-    out.element_name = "particles";
     for (const auto& block : config.fluid.blocks)
       out.elements += lattice_points(block.box.max - block.box.min, dx, dim);
     // Walls: a shell of a few layers (the models' reach is at most three spacings) around a
@@ -108,7 +104,7 @@ SizeEstimate estimate_size(const io::CaseConfig& config) {
     }
     for (const auto& body : config.bodies) out.elements += body_volume(body, dim) / cell_volume;
   }
-  out.bytes = out.elements * bytes_per_element(config.has_fluid() ? config.model_name : "wcsph");
+  out.bytes = out.elements * size.bytes_per_element;
   return out;
 }
 
@@ -118,15 +114,28 @@ double machine_memory_bytes() {
   return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
 }
 
-bool runs_on_a_gpu(const io::CaseConfig& config) {
-  if (!config.has_fluid() || config.model_name != "wcsph") return false;
+bool runs_on_a_gpu(const io::CaseConfig& config, const ModelRegistry& models) {
+  if (!config.has_fluid()) return false;
+  const ModelEntry* model = models.find(config.model_name);
+  if (model == nullptr || !model->size.gpu_bytes_per_element) return false;
   const YAML::Node device = config.model["device"];
   return device && device.IsScalar() && device.Scalar() == "gpu";
 }
 
+bool runs_on_a_gpu(const io::CaseConfig& config) {
+  return runs_on_a_gpu(config, shipped_models(config.dimension));
+}
+
 void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstimate& estimate,
-                                   const DeviceMemory& gpu) {
-  const double needed = estimate.elements * wcsph_device_bytes_per_particle(config.dimension);
+                                   const exec::DeviceMemory& gpu) {
+  refuse_if_the_gpu_cannot_hold(config, estimate, gpu, shipped_models(config.dimension));
+}
+
+void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstimate& estimate,
+                                   const exec::DeviceMemory& gpu, const ModelRegistry& models) {
+  const ModelEntry* model = models.find(config.model_name);
+  if (model == nullptr || !model->size.gpu_bytes_per_element) return;
+  const double needed = estimate.elements * model->size.gpu_bytes_per_element(config.dimension);
   if (gpu.free_bytes <= 0 || needed <= gpu.free_bytes) return;
   throw InputError(config.spacing_place.first, config.spacing_place.second, "spacing",
                    fmt::format("at {} m the case needs about {:.3g} particles and {} of the "
@@ -137,8 +146,9 @@ void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstim
 
 void refuse_if_it_cannot_fit_here(const io::CaseConfig& config, const SizeEstimate& estimate) {
   refuse_if_it_cannot_fit(config, estimate, machine_memory_bytes());
-  if (runs_on_a_gpu(config))
-    refuse_if_the_gpu_cannot_hold(config, estimate, device_memory(WcsphDevice::kGpu));
+  const ModelRegistry models = shipped_models(config.dimension);
+  if (runs_on_a_gpu(config, models))
+    refuse_if_the_gpu_cannot_hold(config, estimate, exec::gpu_memory(), models);
 }
 
 std::string readable_bytes(double bytes) {

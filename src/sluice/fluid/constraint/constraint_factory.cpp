@@ -1,8 +1,11 @@
 #include "sluice/fluid/constraint/constraint_factory.hpp"
 
 #include "sluice/fluid/constraint/constraint_model.hpp"
+#include "sluice/fluid/constraint/constraint_parameters.hpp"
 
 namespace sluice {
+
+namespace {
 
 template <int D>
 std::unique_ptr<FluidSystem> make_constraint(const io::CaseConfig& config,
@@ -13,9 +16,18 @@ std::unique_ptr<FluidSystem> make_constraint(const io::CaseConfig& config,
   return model;
 }
 
-template std::unique_ptr<FluidSystem> make_constraint<2>(const io::CaseConfig&,
-                                                         const BodyGeometry&);
-template std::unique_ptr<FluidSystem> make_constraint<3>(const io::CaseConfig&,
-                                                         const BodyGeometry&);
+}  // namespace
+
+template <int D>
+ModelEntry constraint_entry() {
+  ModelEntry entry;
+  entry.make = make_constraint<D>;
+  entry.prepare = prepare_constraint_case;
+  entry.size.bytes_per_element = 6000;  // measured: docs/output.md
+  return entry;
+}
+
+template ModelEntry constraint_entry<2>();
+template ModelEntry constraint_entry<3>();
 
 }  // namespace sluice

@@ -1,16 +1,13 @@
 // Builds the constraint-fluid model for a case (registered as `constraint`).
 #pragma once
 
-#include <memory>
-
-#include "sluice/coupling/body_geometry.hpp"
-#include "sluice/fluid/fluid_system.hpp"
-#include "sluice/io/case_config.hpp"
+#include "sluice/fluid/model_entry.hpp"
 
 namespace sluice {
 
+// The model's registry entry (fluid/model_entry.hpp): its factory, its case hook, its size and
+// its devices.
 template <int D>
-std::unique_ptr<FluidSystem> make_constraint(const io::CaseConfig& config,
-                                             const BodyGeometry& bodies);
+ModelEntry constraint_entry();
 
 }  // namespace sluice

@@ -1,8 +1,11 @@
 #include "sluice/fluid/granular/granular_factory.hpp"
 
 #include "sluice/fluid/granular/granular_model.hpp"
+#include "sluice/fluid/granular/granular_parameters.hpp"
 
 namespace sluice {
+
+namespace {
 
 template <int D>
 std::unique_ptr<FluidSystem> make_granular(const io::CaseConfig& config,
@@ -12,7 +15,18 @@ std::unique_ptr<FluidSystem> make_granular(const io::CaseConfig& config,
   return model;
 }
 
-template std::unique_ptr<FluidSystem> make_granular<2>(const io::CaseConfig&, const BodyGeometry&);
-template std::unique_ptr<FluidSystem> make_granular<3>(const io::CaseConfig&, const BodyGeometry&);
+}  // namespace
+
+template <int D>
+ModelEntry granular_entry() {
+  ModelEntry entry;
+  entry.make = make_granular<D>;
+  entry.prepare = prepare_granular_case;
+  entry.size.bytes_per_element = 900;  // measured: docs/output.md
+  return entry;
+}
+
+template ModelEntry granular_entry<2>();
+template ModelEntry granular_entry<3>();
 
 }  // namespace sluice

@@ -1,15 +1,13 @@
 // Builds the grid model of a case.
 #pragma once
 
-#include <memory>
-
-#include "sluice/coupling/body_geometry.hpp"
-#include "sluice/fluid/fluid_system.hpp"
-#include "sluice/io/case_config.hpp"
+#include "sluice/fluid/model_entry.hpp"
 
 namespace sluice {
 
+// The model's registry entry (fluid/model_entry.hpp): its factory, its case hook, its size and
+// its devices.
 template <int D>
-std::unique_ptr<FluidSystem> make_mac(const io::CaseConfig& config, const BodyGeometry& bodies);
+ModelEntry mac_entry();
 
 }  // namespace sluice

@@ -4,6 +4,8 @@
 
 namespace sluice {
 
+namespace {
+
 template <int D>
 std::unique_ptr<FluidSystem> make_mps(const io::CaseConfig& config, const BodyGeometry& bodies) {
   auto model = std::make_unique<MpsModel<D>>(read_mps_parameters(config), config, bodies);
@@ -11,7 +13,17 @@ std::unique_ptr<FluidSystem> make_mps(const io::CaseConfig& config, const BodyGe
   return model;
 }
 
-template std::unique_ptr<FluidSystem> make_mps<2>(const io::CaseConfig&, const BodyGeometry&);
-template std::unique_ptr<FluidSystem> make_mps<3>(const io::CaseConfig&, const BodyGeometry&);
+}  // namespace
+
+template <int D>
+ModelEntry mps_entry() {
+  ModelEntry entry;
+  entry.make = make_mps<D>;
+  entry.size.bytes_per_element = 800;  // measured: docs/output.md
+  return entry;
+}
+
+template ModelEntry mps_entry<2>();
+template ModelEntry mps_entry<3>();
 
 }  // namespace sluice

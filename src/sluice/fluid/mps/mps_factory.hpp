@@ -1,15 +1,13 @@
 // Builds the MPS model from a case (registered as "mps" in fluid/model_registry.cpp).
 #pragma once
 
-#include <memory>
-
-#include "sluice/coupling/body_geometry.hpp"
-#include "sluice/fluid/fluid_system.hpp"
-#include "sluice/io/case_config.hpp"
+#include "sluice/fluid/model_entry.hpp"
 
 namespace sluice {
 
+// The model's registry entry (fluid/model_entry.hpp): its factory, its case hook, its size and
+// its devices.
 template <int D>
-std::unique_ptr<FluidSystem> make_mps(const io::CaseConfig& config, const BodyGeometry& bodies);
+ModelEntry mps_entry();
 
 }  // namespace sluice

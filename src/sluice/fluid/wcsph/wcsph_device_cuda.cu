@@ -9,26 +9,6 @@
 
 namespace sluice {
 
-bool cuda_device_found(std::string& why) {
-  int count = 0;
-  const cudaError_t status = cudaGetDeviceCount(&count);
-  if (status != cudaSuccess) {
-    why = std::string("no GPU found: ") + cudaGetErrorString(status);
-    return false;
-  }
-  if (count == 0) {
-    why = "no GPU found";
-    return false;
-  }
-  return true;
-}
-
-DeviceMemory cuda_device_memory() {
-  std::size_t free = 0, total = 0;
-  exec::cuda_check(cudaMemGetInfo(&free, &total), "cudaMemGetInfo");
-  return {exec::CudaBackend::name(), static_cast<double>(free)};
-}
-
 template <int D, class Kernel>
 std::unique_ptr<WcsphDeviceRun<D>> make_wcsph_cuda_run(const WcsphDeviceSetup<D, Kernel>& setup) {
   return std::make_unique<WcsphDeviceRunOn<D, Kernel, exec::CudaBackend>>(setup);

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "sluice/exec/gpu_devices.hpp"
 #include "sluice/exec/host_backend.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run_impl.hpp"
 #include "sluice/kernels/cubic_spline.hpp"
@@ -13,20 +14,12 @@ namespace sluice {
 
 #if defined(SLUICE_WITH_CUDA)
 // wcsph_device_cuda.cu
-bool cuda_device_found(std::string& why);
-DeviceMemory cuda_device_memory();
 template <int D, class Kernel>
 std::unique_ptr<WcsphDeviceRun<D>> make_wcsph_cuda_run(const WcsphDeviceSetup<D, Kernel>& setup);
 #endif
 
 bool wcsph_device_available(WcsphDevice device, std::string& why) {
-  if (device != WcsphDevice::kGpu) return true;
-#if defined(SLUICE_WITH_CUDA)
-  return cuda_device_found(why);
-#else
-  why = "this sluice was built without CUDA (nvcc was not found when it was configured)";
-  return false;
-#endif
+  return device != WcsphDevice::kGpu || exec::gpu_available(why);
 }
 
 double wcsph_device_bytes_per_particle(int dimension) {
@@ -39,14 +32,6 @@ double wcsph_device_bytes_per_particle(int dimension) {
   const double reals = (5 * d + 5) + (d + 1) + 1 + (2 * d + 2);
   const double integers = 2 + 1 + 4 + 1 + 1 + 2;
   return reals * sizeof(Real) + integers * 4 + 16 * 4;
-}
-
-DeviceMemory device_memory(WcsphDevice device) {
-#if defined(SLUICE_WITH_CUDA)
-  std::string why;
-  if (device == WcsphDevice::kGpu && cuda_device_found(why)) return cuda_device_memory();
-#endif
-  return {device == WcsphDevice::kGpu ? "GPU" : "host", 0};
 }
 
 template <int D, class Kernel>

@@ -31,14 +31,6 @@ bool wcsph_device_available(WcsphDevice device, std::string& why);
 // the sort's and the gather's scratch, the lists by kind, the last good state, the packed copy.
 double wcsph_device_bytes_per_particle(int dimension);
 
-// A device's name and the memory it has free: a GPU's, as CUDA reports it; zero bytes for the
-// host's threads (`emulated`), whose memory the case's size estimate has checked.
-struct DeviceMemory {
-  std::string name;
-  double free_bytes = 0;
-};
-DeviceMemory device_memory(WcsphDevice device);
-
 template <int D>
 class WcsphDeviceRun {
  public:

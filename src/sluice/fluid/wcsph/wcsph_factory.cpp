@@ -1,5 +1,6 @@
 #include "sluice/fluid/wcsph/wcsph_factory.hpp"
 
+#include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/fluid/wcsph/wcsph_model.hpp"
 #include "sluice/kernels/cubic_spline.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
@@ -14,7 +15,6 @@ std::unique_ptr<FluidSystem> build(const WcsphParameters& p, const io::CaseConfi
   model->initialize();
   return model;
 }
-}  // namespace
 
 template <int D>
 std::unique_ptr<FluidSystem> make_wcsph(const io::CaseConfig& config, const BodyGeometry& bodies) {
@@ -28,7 +28,19 @@ std::unique_ptr<FluidSystem> make_wcsph(const io::CaseConfig& config, const Body
   return build<D, WendlandC2<D>>(p, config, bodies);
 }
 
-template std::unique_ptr<FluidSystem> make_wcsph<2>(const io::CaseConfig&, const BodyGeometry&);
-template std::unique_ptr<FluidSystem> make_wcsph<3>(const io::CaseConfig&, const BodyGeometry&);
+}  // namespace
+
+template <int D>
+ModelEntry wcsph_entry() {
+  ModelEntry entry;
+  entry.make = make_wcsph<D>;
+  entry.size.bytes_per_element = 500;  // measured: docs/output.md
+  entry.size.gpu_bytes_per_element = wcsph_device_bytes_per_particle;
+  entry.devices = {"cpu", "gpu", "emulated"};
+  return entry;
+}
+
+template ModelEntry wcsph_entry<2>();
+template ModelEntry wcsph_entry<3>();
 
 }  // namespace sluice

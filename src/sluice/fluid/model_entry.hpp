@@ -1,0 +1,47 @@
+// What sluice knows of a fluid model, as one registry entry: how to build it from a case, what
+// it changes in the case first, how its memory grows, and where its loops run. Each model's
+// folder returns its own entry (wcsph_entry<D>() ...); fluid/model_registry.hpp finds them by name.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sluice/coupling/body_geometry.hpp"
+#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/io/case_config.hpp"
+
+namespace sluice {
+
+// Reads the model's parameters from the case (throws InputError) and builds it, ready to step.
+using FluidFactory =
+    std::function<std::unique_ptr<FluidSystem>(const io::CaseConfig&, const BodyGeometry&)>;
+
+// What a model changes in the case before anything is built: bodies it adds to the case's own
+// (penalty-sph: the grains of its free solid layers), the contact method it needs (granular).
+// Throws InputError.
+using CasePreparation = std::function<void(io::CaseConfig&)>;
+
+// What a model's memory grows with, to size a case before anything is built (sim/size_estimate).
+struct ModelSize {
+  std::string element_name = "particles";
+  // Resident memory per element, measured (docs/output.md); unknown: the largest of those shipped.
+  double bytes_per_element = 6000;
+  // The elements of a case where they are not the particles of its geometry (a grid's cells);
+  // empty: the particles of its fluid blocks, wall layers and bodies.
+  std::function<double(const io::CaseConfig&)> elements;
+  // Device memory per element on a GPU, by dimension; empty where the model has no GPU run.
+  std::function<double(int dimension)> gpu_bytes_per_element;
+};
+
+// Everything sluice knows of a model: how to build it, what it changes in the case, its size,
+// and where its loops can run ("cpu", "gpu", "emulated": `model.device`, `--device`).
+struct ModelEntry {
+  FluidFactory make;
+  CasePreparation prepare;  // empty: the case as it is
+  ModelSize size;
+  std::vector<std::string> devices = {"cpu"};
+};
+
+}  // namespace sluice
