@@ -1,8 +1,10 @@
 # sluice_folder_library(FOLDER [SOURCES ...] [DEPENDS lower folders ...] [LIBRARIES ...]):
-# the library target sluice_FOLDER for src/sluice/FOLDER. Dependencies run one way: a folder
-# may include its own headers and those of the folders it depends on, directly or through
-# them; configuring fails on any other `#include "sluice/..."`, naming the file and line, so
-# an include that runs upward never builds.
+# the library target sluice_FOLDER for src/sluice/FOLDER (a folder below another, such as
+# fluid/wcsph, is a library of its own: target sluice_fluid_wcsph). Dependencies run one way: a
+# folder may include its own headers and those of the folders it depends on, directly or through
+# them; configuring fails on any other `#include "sluice/..."` (in .hpp, .cpp, .cu and .cuh
+# files, indented or not), naming the file and line, so an include that runs upward or sideways
+# (one model's folder into another's) never builds.
 function(sluice_folder_library folder)
   cmake_parse_arguments(arg "" "" "SOURCES;DEPENDS;LIBRARIES" ${ARGN})
   set(allowed ${folder})
@@ -17,12 +19,15 @@ function(sluice_folder_library folder)
   list(REMOVE_DUPLICATES allowed)
   set_property(GLOBAL PROPERTY sluice_reaches_${folder} ${allowed})
 
-  file(GLOB_RECURSE files CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/src/sluice/${folder}/*.hpp"
-       "${PROJECT_SOURCE_DIR}/src/sluice/${folder}/*.cpp")
+  set(here "${PROJECT_SOURCE_DIR}/src/sluice/${folder}")
+  file(GLOB files CONFIGURE_DEPENDS "${here}/*.hpp" "${here}/*.cpp" "${here}/*.cu" "${here}/*.cuh")
   foreach(file IN LISTS files)
-    file(STRINGS "${file}" includes REGEX "^#include \"sluice/")
+    file(STRINGS "${file}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"sluice/")
     foreach(line IN LISTS includes)
-      string(REGEX REPLACE "^#include \"sluice/([a-z_]+)/.*" "\\1" included "${line}")
+      # The folder of the included header: "fluid/wcsph" for "sluice/fluid/wcsph/tait.hpp".
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"sluice/(([a-z_]+/)*)[a-z_0-9.]+\".*"
+                           "\\1" included "${line}")
+      string(REGEX REPLACE "/$" "" included "${included}")
       if(NOT included IN_LIST allowed)
         list(JOIN allowed ", " reach)
         file(STRINGS "${file}" all_lines)
@@ -36,8 +41,9 @@ function(sluice_folder_library folder)
     endforeach()
   endforeach()
 
-  set(target sluice_${folder})
-  list(TRANSFORM arg_DEPENDS PREPEND sluice_ OUTPUT_VARIABLE dependency_targets)
+  string(REPLACE "/" "_" target "sluice_${folder}")
+  list(TRANSFORM arg_DEPENDS REPLACE "/" "_" OUTPUT_VARIABLE dependency_targets)
+  list(TRANSFORM dependency_targets PREPEND sluice_)
   if(arg_SOURCES)
     list(TRANSFORM arg_SOURCES PREPEND "${PROJECT_SOURCE_DIR}/src/sluice/${folder}/")
     add_library(${target} STATIC ${arg_SOURCES})

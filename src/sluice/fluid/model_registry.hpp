@@ -35,12 +35,6 @@ class ModelRegistry {
   std::map<std::string, ModelEntry> entries_;
 };
 
-// Every model sluice ships, for a case of dimension D.
-template <int D>
-ModelRegistry shipped_models();
-// The same, for a case of `dimension` (2 or 3).
-ModelRegistry shipped_models(int dimension);
-
 // The fluid of a case: the model it names among `models`, or, for a case of bodies alone,
 // the bodies' surface particles.
 template <int D>

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "sluice/exec/gpu_devices.hpp"
-#include "sluice/fluid/model_registry.hpp"
+#include "sluice/models/shipped_models.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice {

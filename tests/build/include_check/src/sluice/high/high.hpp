@@ -1,0 +1,2 @@
+#pragma once
+#include "sluice/low/low.hpp"
