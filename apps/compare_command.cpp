@@ -8,7 +8,7 @@
 
 #include "child_runs.hpp"
 #include "sluice/core/errors.hpp"
-#include "sluice/fluid/model_registry.hpp"
+#include "sluice/models/shipped_models.hpp"
 #include "sluice/io/compare_table.hpp"
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/io/yaml_reader.hpp"
