@@ -25,6 +25,7 @@ runs=(
   "floating_box_wcsph|floating_box_2d.yaml|end_time=0.3"
   "dam_break_mps|dam_break_2d_mps.yaml|end_time=0.2"
   "free_bed_penalty_sph|free_bed_2d.yaml|end_time=0.1"
+  "rain_on_concrete_penalty_sph|seed002_rain_concrete.yaml|end_time=0.05"
   "floating_box_constraint|floating_box_2d.yaml|end_time=0.3 model.name=constraint"
   "floating_box_granular|granular_floating_box_2d.yaml|end_time=0.3"
   "floating_box_mac|floating_box_2d.yaml|end_time=0.3 model.name=mac"

@@ -21,8 +21,10 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/penalty_sph/lattice_sums.hpp"
+#include "sluice/fluid/penalty_sph/layer_passage.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
+#include "sluice/fluid/penalty_sph/solid_layers.hpp"
 #include "sluice/fluid/penalty_sph/stiffness_suggestion.hpp"
 #include "sluice/geometry/sampling.hpp"
 
@@ -46,7 +48,9 @@ class PenaltySphModel final : public ParticleFluid<D> {
         gradient_gain_(lattice_gradient_gain(kernels_, config.spacing)),
         damping_(parameters.artificial_viscosity * std::sqrt(parameters.gas_stiffness) *
                  parameters.smoothing_length(config.spacing, D)) {
-    settings_.law.stiffness = p_.stiffness > 0 ? p_.stiffness : suggested_stiffness();
+    settings_.law.stiffness =
+        p_.stiffness > 0 ? p_.stiffness
+                         : energy_rule_stiffness(particle_mass_, p_.max_speed, config.spacing);
     // Without a given Kd, critical damping of one contact: water does not bounce off a wall.
     settings_.law.damping =
         p_.damping > 0 ? p_.damping : 2 * std::sqrt(settings_.law.stiffness * particle_mass_);
@@ -65,7 +69,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
                        settings_.law.stiffness, settings_.law.damping, p_.wall_friction);
     out += fmt::format(", {} solid layer(s)", p_.solids.size());
     if (p_.time_step > 0) out += fmt::format(", fixed dt = {} s", p_.time_step);
-    return out + stiffness_suggestions();
+    return out + layer_stiffness_advice<D>(p_, config_, particle_mass_);
   }
 
   void initialize() override {
@@ -75,23 +79,19 @@ class PenaltySphModel final : public ParticleFluid<D> {
     this->carry_through_put_back(half_velocity_);
     boundary_force_ = ps.add_vector_field({"boundary_force", "N", true});
     solid_spacing_ = ps.add_scalar_field({"solid_spacing", "m", true});
-    layers_above_ = ps.add_int_field({"layers_above", "1"});
-    passed_ = ps.add_int_field({"passed_solid", "1", true});
+    passage_.add_fields(ps);
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!ps.is_fluid(i)) ps[solid_spacing_][i] = config_.spacing;
       // A grain of a free layer is one solid particle as wide as the grain.
       if (const io::BodyConfig* grain = grain_of(i)) ps[solid_spacing_][i] = 2 * grain->radius;
     }
-    add_solid_layers();
-    has_bodies_ = this->body_points().size() > 0;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (!ps.is_fluid(i)) continue;
-      const Real up = ps.position[i][kUpAxis<D>];
-      for (std::size_t k = 0; k < p_.solids.size(); ++k) {
-        if (up > p_.solids[k].box.max[2]) ps[layers_above_][i] |= 1 << k;
-      }
-      if (ps[layers_above_][i] != 0) ++above_count_;
+    if (!p_.solids.empty()) {
+      std::vector<GrainBodies> grain_bodies =
+          add_solid_layers(p_.solids, config_, ps, solid_spacing_);
+      sort_again();
+      passage_.start(ps, p_.solids, std::move(grain_bodies));
     }
+    has_bodies_ = this->body_points().size() > 0;
     compute_density();
     compute_forces();
     measure_extremes();
@@ -128,13 +128,8 @@ class PenaltySphModel final : public ParticleFluid<D> {
         {"boundary_crossings", static_cast<double>(crossings_)},
         {"contact_substeps_per_particle_step",
          particle_steps > 0 ? double(substeps_) / particle_steps : 0}};
-    if (above_count_ > 0) {
-      long passed = 0;
-      const auto& ps = this->state().particles;
-      for (std::size_t i = 0; i < ps.size(); ++i) passed += ps[passed_][i];
-      out.emplace_back("held_back_fraction",
-                       1.0 - static_cast<double>(passed) / static_cast<double>(above_count_));
-    }
+    if (passage_.measured())
+      out.emplace_back("held_back_fraction", passage_.held_back_fraction(this->state().particles));
     return out;
   }
 
@@ -202,38 +197,6 @@ class PenaltySphModel final : public ParticleFluid<D> {
     return p_.keep_negative_pressure ? p : std::max<Real>(p, 0);
   }
 
-  // The energy rule: a particle arriving at the largest expected speed is stopped by one
-  // solid particle of its own spacing within a quarter spacing, 1/2 Ks d^2 = 1/2 m v^2.
-  Real suggested_stiffness() const {
-    return particle_mass_ * std::pow(p_.max_speed / (0.25 * config_.spacing), 2);
-  }
-
-  // Per solid layer, the smallest Ks that holds back the fastest expected impact: a fluid
-  // block falling from its top onto the layer's top, at its initial speed or from rest.
-  std::string stiffness_suggestions() const {
-    std::string out;
-    const double g = config_.gravity.norm();
-    for (const SolidLayerConfig& layer : p_.solids) {
-      double speed = 0;
-      for (const auto& block : config_.fluid.blocks) {
-        const double drop = std::max(0.0, block.box.max[2] - layer.box.max[2]);
-        speed = std::max(speed, std::sqrt(block.velocity.squaredNorm() + 2 * g * drop));
-      }
-      const Real spacing = layer.spacing_ratio * config_.spacing;
-      const Real ks = suggested_penalty_stiffness(
-          penalty_barrier<D>(spacing, (spacing + config_.spacing) / 2), particle_mass_, speed);
-      out += std::isinf(ks) ? fmt::format(
-                                  "\n  {}: no Ks holds the fluid back: the gaps between the solid "
-                                  "particles are wider than the reach (L_b + l0)/2",
-                                  layer.key)
-                            : fmt::format(
-                                  "\n  {}: Ks >= {:.3g} N/m holds the fluid back (the springs' "
-                                  "energy at the centre of a gap beats m v^2/2 at v = {:.3g} m/s)",
-                                  layer.key, ks, speed);
-    }
-    return out;
-  }
-
   // The body of particle i when it is a grain of a free solid layer, else null.
   const io::BodyConfig* grain_of(std::size_t i) const {
     const std::int32_t k = this->state().particles.body_point[i];
@@ -242,37 +205,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
     return body.seen_as_one_particle ? &body : nullptr;
   }
 
-  // The case's fixed solid layers as wall particles of their own spacing (a free layer's
-  // grains are the case's bodies); a fluid block that overlaps a layer is an input error.
-  // For each layer, the bodies of its grains (after the case's own bodies, in layer order).
-  void add_solid_layers() {
-    if (p_.solids.empty()) return;
+  // The particles sorted by cell again, over a box that holds the solid layers too.
+  void sort_again() {
     ParticleState<D>& s = this->state();
     auto& ps = s.particles;
-    std::size_t grains = 0;
-    for (const SolidLayerConfig& layer : p_.solids) {
-      if (layer.free) grains += solid_layer_points<D>(layer, config_).size();
-    }
-    std::size_t next_grain = config_.bodies.size() - grains;
-    for (const SolidLayerConfig& layer : p_.solids) {
-      const Real spacing = layer.spacing_ratio * config_.spacing;
-      const std::vector<Vec<D>> points = solid_layer_points<D>(layer, config_);
-      grain_bodies_.emplace_back(next_grain, layer.free ? next_grain + points.size() : next_grain);
-      next_grain = grain_bodies_.back().second;
-      for (const auto& block : config_.fluid.blocks) {
-        if (block.box.overlaps(layer.box, 0)) {
-          throw InputError(
-              config_.file(), layer.line, layer.key,
-              fmt::format("the solid layer overlaps the fluid block '{}'", block.name));
-        }
-      }
-      if (layer.free) continue;
-      const Real mass = layer.density * std::pow(spacing, D);
-      for (const Vec<D>& x : points) {
-        ps.add(x, Vec<D>::Zero(), layer.density, mass, ParticleKind::kWall);
-        ps[solid_spacing_].back() = spacing;
-      }
-    }
     Vec<D> lo = ps.position.front(), hi = lo;
     for (const Vec<D>& x : ps.position) {
       lo = lo.cwiseMin(x);
@@ -393,7 +329,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
     const auto& half = ps[half_velocity_];
     auto& boundary = ps[boundary_force_];
     const Real dt = step_dt_;
-    update_pass_levels();
+    if (!p_.solids.empty()) passage_.update_levels(ps, this->body_points());
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!ps.is_fluid(i)) continue;
       const SolidStepResult<D>& r = step_results_[i];
@@ -407,37 +343,9 @@ class PenaltySphModel final : public ParticleFluid<D> {
         peak_force_ = std::max<double>(peak_force_, r.peak_force);
       }
       crossings_ += r.crossed;
-      for (std::size_t k = 0; k < p_.solids.size(); ++k) {
-        const bool started_above = ps[layers_above_][i] & (1 << k);
-        if (started_above && ps.position[i][kUpAxis<D>] < pass_level_[k]) {
-          ps[passed_][i] = 1;
-        }
-      }
+      passage_.record(ps, i);
     }
     ++steps_;
-  }
-
-  // Below this height a fluid particle has passed a layer: a fixed layer's bottom, or the
-  // lowest centre of a free layer's grains as they lie now (a bed on the floor has no bottom
-  // to pass: what gets between its grains' centres went through its pores).
-  void update_pass_levels() {
-    const auto& ps = this->state().particles;
-    pass_level_.resize(p_.solids.size());
-    for (std::size_t k = 0; k < p_.solids.size(); ++k) {
-      pass_level_[k] =
-          p_.solids[k].free ? std::numeric_limits<Real>::infinity() : Real(p_.solids[k].box.min[2]);
-    }
-    if (!has_bodies_) return;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      const std::int32_t point = ps.body_point[i];
-      if (point < 0) continue;
-      const std::size_t body = this->body_points()[std::size_t(point)].body;
-      for (std::size_t k = 0; k < grain_bodies_.size(); ++k) {
-        if (body >= grain_bodies_[k].first && body < grain_bodies_[k].second) {
-          pass_level_[k] = std::min(pass_level_[k], ps.position[i][kUpAxis<D>]);
-        }
-      }
-    }
   }
 
   void kick(Real dt) {
@@ -590,7 +498,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
   SolidParticles<D> solids_;
   FieldHandle<Vec<D>> acceleration_, half_velocity_, boundary_force_;
   FieldHandle<Real> solid_spacing_;
-  FieldHandle<std::int32_t> layers_above_, passed_;
+  LayerPassage<D> passage_;
   std::vector<SolidStepResult<D>> step_results_;            // per particle, over the step
   std::vector<std::vector<BodyImpulse<D>>> body_impulses_;  // per drifting particle, scratch
   std::vector<std::uint32_t> drifting_;        // the fluid particles that drift with the bodies
@@ -599,12 +507,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
   Real step_dt_ = 0, drifted_ = 0;
   std::vector<Vec<D>> body_impulse_;  // per body point over the last drift [N s], on the body
   std::vector<Vec<D>> body_pressure_force_;  // per body point [N], on the body
-  std::vector<std::pair<std::size_t, std::size_t>> grain_bodies_;  // per layer: [first, end)
-  std::vector<Real> pass_level_;                                   // per layer [m]
   Real last_dt_ = 1;
   bool has_bodies_ = false;
   Real max_speed_ = 0, max_acceleration_ = 0;
-  long steps_ = 0, fluid_steps_ = 0, contacts_ = 0, crossings_ = 0, substeps_ = 0, above_count_ = 0;
+  long steps_ = 0, fluid_steps_ = 0, contacts_ = 0, crossings_ = 0, substeps_ = 0;
   double force_sum_ = 0, peak_force_ = 0;
 };
 
