@@ -30,6 +30,8 @@ runs=(
   "floating_box_granular|granular_floating_box_2d.yaml|end_time=0.3"
   "floating_box_mac|floating_box_2d.yaml|end_time=0.3 model.name=mac"
   "fording_wcsph|fording.yaml|end_time=0.05 spacing=0.08"
+  "sphere_stack_complementarity|sphere_stack.yaml|end_time=0.3"
+  "resting_cubes_complementarity|resting_cubes.yaml|end_time=0.3 contact.method=complementarity"
   "floating_box_emulated|floating_box_2d.yaml|end_time=0.1 model.device=emulated"
 )
 

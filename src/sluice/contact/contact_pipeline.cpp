@@ -1,8 +1,9 @@
 #include "sluice/contact/contact_pipeline.hpp"
 
 #include <algorithm>
+#include <array>
 
-#include "sluice/ccp/cone.hpp"
+#include "sluice/ccp/contact_rows.hpp"
 
 namespace sluice {
 
@@ -82,20 +83,8 @@ void ContactPipeline::contact_constraints(const std::vector<SystemBody>& bodies,
     const Real mu = std::min(shapes_[c.a].material.friction, shapes_[c.b].material.friction);
     for (std::size_t k = 0; k < c.pairs.size(); ++k) {
       const ParticlePair& p = c.pairs[k];
-      Vec3 u, v;
-      tangent_basis(p.normal, u, v);
-      ConstraintRow rows_of_pair[3];
-      const Vec3 axes[3] = {p.normal, u, v};
-      const Vec3 ra = p.point - xa, rb = p.point - xb;
-      for (int r = 0; r < 3; ++r) {
-        ConstraintRow& row = rows_of_pair[r];
-        row.a = c.a;
-        row.b = c.b;
-        row.linear_a = -axes[r];
-        row.angular_a = -ra.cross(axes[r]);
-        row.linear_b = axes[r];
-        row.angular_b = rb.cross(axes[r]);
-      }
+      std::array<ConstraintRow, 3> rows_of_pair =
+          contact_rows(c.a, c.b, p.normal, p.point - xa, p.point - xb);
       // A gap may close within the step; an overlap is taken back at up to recovery_speed.
       rows_of_pair[0].bias = std::min(p.overlap / h, recovery_speed);
       // The contact's identity and the pair's place in it: the same while both last.

@@ -13,12 +13,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <unordered_map>
 
-#include "sluice/ccp/cone.hpp"
+#include "sluice/ccp/contact_rows.hpp"
 #include "sluice/ccp/row_group.hpp"
 #include "sluice/ccp/sphere_contacts.hpp"
 #include "sluice/exec/policy.hpp"
@@ -309,19 +310,9 @@ class GranularModel final : public ParticleFluid<D> {
   void add_body_contact(std::size_t b, std::size_t s, const SurfacePoint& p, Real mu, Real h) {
     const auto& ps = this->state().particles;
     const Real r = ps[radius_field_][sphere_particle_[s]];
-    const Vec3 arm_body = p.closest - bodies_->motion()[b].position;
-    Vec3 axes[3];
-    axes[0] = p.normal;
-    tangent_basis(p.normal, axes[1], axes[2]);
-    ConstraintRow rows[3];
-    for (int k = 0; k < 3; ++k) {
-      rows[k].a = b;
-      rows[k].b = first_ + s;
-      rows[k].linear_a = -axes[k];
-      rows[k].angular_a = -arm_body.cross(axes[k]);
-      rows[k].linear_b = axes[k];
-      rows[k].angular_b = (-r * p.normal).cross(axes[k]);
-    }
+    // The body is a, the sphere b; the sphere's arm reaches its surface along the normal.
+    std::array<ConstraintRow, 3> rows = contact_rows(
+        b, first_ + s, p.normal, p.closest - bodies_->motion()[b].position, -r * p.normal);
     rows[0].bias = target(p.distance - r, h);
     rows[0].lower = -p_.cohesion * h;
     const std::uint64_t key =
