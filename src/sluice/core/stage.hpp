@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <utility>
+#include <vector>
 
 namespace sluice {
 
@@ -40,5 +41,9 @@ template <class Context, class Fn>
 std::unique_ptr<Stage<Context>> make_stage(const char* name, Fn fn) {
   return std::make_unique<FunctionStage<Context, Fn>>(name, std::move(fn));
 }
+
+// The stages of a time step, in the order they run.
+using StepStage = Stage<const StepClock>;
+using StageList = std::vector<std::unique_ptr<StepStage>>;
 
 }  // namespace sluice

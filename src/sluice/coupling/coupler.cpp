@@ -6,11 +6,13 @@
 
 namespace sluice {
 
-Coupler::Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling)
+Coupler::Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling,
+                 const std::string& scheme)
     : system_(system),
       bodies_(bodies),
       fluid_(fluid),
       subcycling_(subcycling),
+      scheme_(make_coupling_scheme(scheme)),
       motion_(bodies),
       fluid_force_(bodies, Vec3::Zero()),
       fluid_moment_(bodies, Vec3::Zero()) {
@@ -50,27 +52,16 @@ int Coupler::exchanges(double dt) const {
   return static_cast<int>(std::ceil(dt * std::sqrt(stiffness / lightest) / kExchangeAngle - 1e-9));
 }
 
-void Coupler::advance_bodies(double dt) {
-  const int pieces = std::max(1, exchanges(dt));
-  const bool monolithic = fluid_ && fluid_->scheme() == CouplingScheme::kMonolithic;
-  const double h = dt / pieces;
-  int substeps = 0;
-  for (int e = 0; e < pieces; ++e) {
-    if (e > 0) collect_loads();
-    if (monolithic) {
-      // The fluid acts through the solve; its loads are for the output only.
-      substeps += system_.advance(h, {}, {}, fluid_);
-    } else {
-      substeps += system_.advance(h, fluid_force_, fluid_moment_);
-    }
-    update_motion(h);
-    if (fluid_) {
-      fluid_->receive_body_motion(motion_);
-      fluid_->advance_with_bodies(h);
-    }
+int Coupler::exchange(double h, bool in_solve) {
+  // In the solve, the fluid acts through it; its loads are for the output only.
+  const int substeps = in_solve && fluid_ ? system_.advance(h, {}, {}, fluid_)
+                                          : system_.advance(h, fluid_force_, fluid_moment_);
+  update_motion(h);
+  if (fluid_) {
+    fluid_->receive_body_motion(motion_);
+    fluid_->advance_with_bodies(h);
   }
-  most_substeps_ = std::max(most_substeps_, substeps);
-  most_exchanges_ = std::max(most_exchanges_, pieces);
+  return substeps;
 }
 
 void Coupler::collect_loads() {

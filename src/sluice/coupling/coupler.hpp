@@ -1,19 +1,17 @@
-// The order of the exchanges between a fluid and the rigid bodies. Explicit co-simulation
-// (seed 000): in each fluid step the bodies advance first, over as many solid sub-steps as
-// their contacts need, with the fluid's last load held; the fluid then sees the bodies where
-// they now are, evaluates its forces, and hands back the loads for the next step. Without
-// sub-cycling, the fluid itself steps at the solid step whenever a contact is in reach (the
-// reference of C6). Monolithic (a fluid whose scheme says so): the fluid joins every
-// velocity-level solve of the bodies with its rows, or its own bodies and contacts
-// (rigid/ccp_participant.hpp); its loads are then reported, not held. A fluid that holds the bodies
-// on stiff springs (penalty-sph) asks for several exchanges within its step: the bodies advance
-// piece by piece, and the fluid moves with them after each piece and hands back its loads.
+// What a fluid and the rigid bodies exchange, and when: the bodies' motion handed to the fluid,
+// the fluid's loads held for the bodies, and the step's order, which the coupling scheme
+// (coupling_scheme.hpp) owns. Without sub-cycling, the fluid itself steps at the solid step
+// whenever a contact is in reach (the reference of C6).
 #pragma once
 
+#include <algorithm>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "sluice/contact/multibody_system.hpp"
 #include "sluice/core/time_step.hpp"
+#include "sluice/coupling/coupling_scheme.hpp"
 #include "sluice/coupling/fluid_exchange.hpp"
 
 namespace sluice {
@@ -21,16 +19,36 @@ namespace sluice {
 class Coupler {
  public:
   // The first `bodies` bodies of `system` are the case's bodies (the rest are walls); `fluid`
-  // may be null (bodies alone). Both must outlive the coupler.
-  Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling);
+  // may be null (bodies alone). Both must outlive the coupler. `scheme`: a name of
+  // coupling_scheme_names().
+  Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling,
+          const std::string& scheme = "held-loads");
+
+  const CouplingScheme& scheme() const { return *scheme_; }
+  // The step's stages as the scheme orders them (CouplingScheme::assemble_step).
+  StageList assemble_step(StageList before_bodies, StageList after_bodies, bool has_bodies,
+                          bool has_fluid) {
+    return scheme_->assemble_step(std::move(before_bodies), std::move(after_bodies), *this,
+                                  has_bodies, has_fluid);
+  }
 
   // The step the coupled system takes when the fluid asks for `fluid` (without sub-cycling, a
   // contact's shorter step limits it).
   TimeStep time_step(TimeStep fluid);
-  // Advances the bodies by dt with the held loads, then hands the fluid their motion.
-  void advance_bodies(double dt);
+  // Advances the bodies by dt as the scheme exchanges with the fluid.
+  void advance_bodies(double dt) { scheme_->advance(*this, dt); }
   // Takes the fluid's loads on the bodies, to hold over the next advance.
   void collect_loads();
+
+  // The schemes' exchange: advances the bodies by h, with the held loads or (in_solve) with
+  // the fluid in their solve, then hands the fluid their motion and lets a fluid that moves
+  // with them do so. Returns the solid sub-steps it took.
+  int exchange(double h, bool in_solve);
+  // A step took `substeps` solid sub-steps in `exchanges` exchanges (the statistics).
+  void record_step(int substeps, int exchanges) {
+    most_substeps_ = std::max(most_substeps_, substeps);
+    most_exchanges_ = std::max(most_exchanges_, exchanges);
+  }
 
   const std::vector<BodyKinematics>& motion() const { return motion_; }
   // The fluid's force and moment (about the centre of mass) on each body, as held.
@@ -59,6 +77,7 @@ class Coupler {
   std::size_t bodies_;
   FluidExchange* fluid_;
   bool subcycling_;
+  std::unique_ptr<CouplingScheme> scheme_;
   std::vector<BodyKinematics> motion_;
   std::vector<Vec3> fluid_force_, fluid_moment_;
   int most_substeps_ = 0;

@@ -9,15 +9,11 @@
 
 namespace sluice {
 
-// Explicit co-simulation holds the fluid's loads over the bodies' sub-steps. In the monolithic
-// scheme the fluid also joins the bodies' velocity-level step (rigid/ccp_participant.hpp):
-// rows on the bodies, or bodies and contacts of its own (a granular fluid's spheres), met in
-// every solve together with whatever else binds the bodies.
-enum class CouplingScheme { kCoSimulation, kMonolithic };
-
+// In the monolithic scheme (coupling_scheme.hpp) the fluid joins the bodies' velocity-level
+// step (rigid/ccp_participant.hpp): rows on the bodies, or bodies and contacts of its own (a
+// granular fluid's spheres), met in every solve together with whatever else binds the bodies.
 class FluidExchange : public CcpParticipant {
  public:
-  virtual CouplingScheme scheme() const { return CouplingScheme::kCoSimulation; }
   // The bodies have moved: the fluid places its boundary on them.
   virtual void receive_body_motion(const std::vector<BodyKinematics>& motion) = 0;
   // After receive_body_motion at the end of each exchange of length dt: a fluid that moves

@@ -19,9 +19,6 @@
 
 namespace sluice {
 
-using StepStage = Stage<const StepClock>;
-using StageList = std::vector<std::unique_ptr<StepStage>>;
-
 // How big the fluid is: its elements (particles or cells) and, of them, the fluid ones.
 struct FluidSize {
   const char* element_name = "particles";  // what an element is, in messages

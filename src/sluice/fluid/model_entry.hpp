@@ -36,12 +36,15 @@ struct ModelSize {
 };
 
 // Everything sluice knows of a model: how to build it, what it changes in the case, its size,
-// and where its loops can run ("cpu", "gpu", "emulated": `model.device`, `--device`).
+// where its loops can run ("cpu", "gpu", "emulated": `model.device`, `--device`), and the
+// coupling schemes it supports with bodies (coupling/coupling_scheme.hpp; the first unless the
+// case's `coupling.scheme` picks another).
 struct ModelEntry {
   FluidFactory make;
   CasePreparation prepare;  // empty: the case as it is
   ModelSize size;
   std::vector<std::string> devices = {"cpu"};
+  std::vector<std::string> schemes = {"held-loads"};
 };
 
 }  // namespace sluice

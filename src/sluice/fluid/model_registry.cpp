@@ -4,7 +4,10 @@
 
 #include <algorithm>
 
+#include "sluice/core/errors.hpp"
+#include "sluice/coupling/coupling_scheme.hpp"
 #include "sluice/fluid/body_particles.hpp"
+#include "sluice/io/yaml_reader.hpp"
 
 namespace sluice {
 
@@ -36,10 +39,33 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
 }
 
 io::CaseConfig ModelRegistry::prepared(io::CaseConfig config) const {
-  if (!config.has_fluid()) return config;
+  if (!config.has_fluid()) {
+    coupling_scheme(config);
+    return config;
+  }
   const ModelEntry* entry = find(config.model_name);
   if (entry != nullptr && entry->prepare) entry->prepare(config);
+  coupling_scheme(config);  // a scheme the model does not support: refused before building
   return config;
+}
+
+std::string ModelRegistry::coupling_scheme(const io::CaseConfig& config) const {
+  const ModelEntry* entry = config.has_fluid() ? find(config.model_name) : nullptr;
+  const std::vector<std::string> supported =
+      entry != nullptr ? entry->schemes : std::vector<std::string>{"held-loads"};
+  const std::string& chosen = config.coupling.scheme;
+  if (chosen.empty()) return supported.front();
+  if (std::find(supported.begin(), supported.end(), chosen) != supported.end()) return chosen;
+  const auto& [file, line] = config.coupling.scheme_place;
+  const std::string who =
+      config.has_fluid() ? "the " + config.model_name + " model" : "a case of bodies alone";
+  const std::vector<std::string> every = coupling_scheme_names();
+  std::string problem = io::unknown_choice("coupling scheme", chosen, every);
+  if (std::find(every.begin(), every.end(), chosen) != every.end()) {
+    problem =
+        fmt::format("{} is coupled by {}, not '{}'", who, fmt::join(supported, " or "), chosen);
+  }
+  throw InputError(file, line, "coupling.scheme", problem);
 }
 
 template <int D>

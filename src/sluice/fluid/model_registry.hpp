@@ -30,6 +30,10 @@ class ModelRegistry {
   std::unique_ptr<FluidSystem> make(const io::CaseConfig& config, const BodyGeometry& bodies) const;
   // The case as its model prepares it (throws InputError).
   io::CaseConfig prepared(io::CaseConfig config) const;
+  // The coupling scheme of the case: its `coupling.scheme`, which its model must support, or
+  // the model's own (held-loads for a case of bodies alone). Throws InputError naming
+  // coupling.scheme and the schemes the model supports.
+  std::string coupling_scheme(const io::CaseConfig& config) const;
 
  private:
   std::map<std::string, ModelEntry> entries_;

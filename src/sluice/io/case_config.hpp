@@ -85,6 +85,12 @@ struct ContactConfig {
   int line = 0;
 };
 
+// How the fluid and the bodies take a step together (coupling/coupling_scheme.hpp).
+struct CouplingConfig {
+  std::string scheme;  // empty: the model's own (the first its registry entry names)
+  std::pair<std::string, int> scheme_place;  // file (or --set) and line of `coupling.scheme`
+};
+
 // A joint between two bodies named in `bodies` ("world" for the world), at a world anchor,
 // with a world axis (revolute, prismatic), as at the start.
 struct JointConfig {
@@ -124,6 +130,7 @@ struct CaseConfig {
   std::vector<WallConfig> walls;
   std::vector<BodyConfig> bodies;
   ContactConfig contact;
+  CouplingConfig coupling;
   std::vector<JointConfig> joints;
   double body_interval = 0;        // time between rows of OUT/bodies/NAME.csv
   double checkpoint_interval = 0;  // simulated time between checkpoints; 0: none

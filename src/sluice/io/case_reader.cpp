@@ -229,6 +229,14 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
   } else {
     c.contact.distance = c.spacing;
   }
+  if (top.has("coupling")) {
+    MapReader coupling = top.map("coupling");
+    if (coupling.has("scheme")) {
+      c.coupling.scheme = coupling.required<std::string>("scheme");
+      c.coupling.scheme_place = coupling.place_of("scheme");
+    }
+    coupling.finish();
+  }
   // A case of bodies alone needs no fluid and no model.
   if (top.has("fluid") || c.bodies.empty()) c.fluid = read_fluid(top.map("fluid"), c);
 

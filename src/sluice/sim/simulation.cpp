@@ -9,20 +9,12 @@ Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& mod
     : config_(models.prepared(config)),
       bodies_(std::make_unique<RigidBodies>(config_)),
       fluid_(make_fluid_system<D>(config_, *bodies_, models)),
-      coupler_(bodies_->system(), bodies_->count(), fluid_.get(), config.contact.subcycling) {
-  StageList after_bodies;
-  fluid_->append_stages(stages_, after_bodies);
-  // A monolithic fluid (granular) moves in the bodies' solve, with or without bodies.
-  if (!bodies_->empty() || (has_model() && fluid_->scheme() == CouplingScheme::kMonolithic)) {
-    stages_.push_back(make_stage<const StepClock>(
-        "bodies", [this](const StepClock& c) { coupler_.advance_bodies(c.dt); }));
-  }
-  for (auto& stage : after_bodies) stages_.push_back(std::move(stage));
-  if (has_model() && !bodies_->empty()) {
-    stages_.push_back(make_stage<const StepClock>(
-        "body_loads", [this](const StepClock&) { coupler_.collect_loads(); }));
-    coupler_.collect_loads();
-  }
+      coupler_(bodies_->system(), bodies_->count(), fluid_.get(), config.contact.subcycling,
+               models.coupling_scheme(config_)) {
+  StageList before_bodies, after_bodies;
+  fluid_->append_stages(before_bodies, after_bodies);
+  stages_ = coupler_.assemble_step(std::move(before_bodies), std::move(after_bodies),
+                                   !bodies_->empty(), has_model());
   for (const auto& stage : stages_) slots_.push_back(timers_.slot(stage->name()));
 }
 

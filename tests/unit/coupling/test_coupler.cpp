@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "sluice/contact/contact_body_builder.hpp"
 
@@ -77,7 +80,7 @@ TEST(Coupler, SpringsSplitTheStepForTheLightestBody) {
   // omega = sqrt(5e4 / 1.5e-3) = 5774 rad/s: a step of 0.01 s in pieces of omega h <= 0.25.
   MultibodySystem system = one_free_block(1.5e-3);
   SpringHeld fluid(5e4);
-  Coupler coupler(system, 1, &fluid, true);
+  Coupler coupler(system, 1, &fluid, true, "spring-exchanges");
   const int expected = static_cast<int>(std::ceil(0.01 * std::sqrt(5e4 / 1.5e-3) / 0.25));
   EXPECT_EQ(coupler.exchanges(0.01), expected);
   EXPECT_EQ(expected, 231);
@@ -89,6 +92,48 @@ TEST(Coupler, SpringsSplitTheStepForTheLightestBody) {
   EXPECT_EQ(coupler.most_exchanges(), expected);
   // The block fell through all the pieces, as in one step.
   EXPECT_NEAR(coupler.motion()[0].velocity[2], -0.1, 1e-12);
+}
+
+// Held loads, the co-simulation of a fluid without springs, take the step in one exchange.
+TEST(Coupler, HeldLoadsTakeTheStepInOneExchange) {
+  MultibodySystem system = one_free_block(1.5e-3);
+  SpringHeld fluid(0);
+  Coupler coupler(system, 1, &fluid, true);
+  EXPECT_STREQ(coupler.scheme().name(), "held-loads");
+  coupler.advance_bodies(0.01);
+  EXPECT_EQ(fluid.pieces, std::vector<double>{0.01});
+  EXPECT_EQ(coupler.most_exchanges(), 1);
+}
+
+// The step's stages as each scheme orders them around the fluid's own.
+TEST(CouplingScheme, OrdersTheStepAroundTheFluidsStages) {
+  auto names = [](const StageList& stages) {
+    std::vector<std::string> out;
+    for (const auto& s : stages) out.emplace_back(s->name());
+    return out;
+  };
+  auto fluid_stage = [](const char* name) {
+    StageList list;
+    list.push_back(make_stage<const StepClock>(name, [](const StepClock&) {}));
+    return list;
+  };
+  MultibodySystem system = one_free_block(1.0);
+  ConstantPush fluid(Vec3(0, 0, 1));
+  for (const std::string scheme : {"held-loads", "spring-exchanges", "monolithic"}) {
+    Coupler coupler(system, 1, &fluid, true, scheme);
+    EXPECT_EQ(names(coupler.assemble_step(fluid_stage("move"), fluid_stage("forces"), true, true)),
+              (std::vector<std::string>{"move", "bodies", "forces", "body_loads"}))
+        << scheme;
+    // The loads were taken once already, for the first step.
+    EXPECT_EQ(coupler.fluid_force()[0], Vec3(0, 0, 1)) << scheme;
+    // Without bodies, only the monolithic scheme keeps the bodies' solve (a granular fluid's).
+    const std::vector<std::string> alone =
+        names(coupler.assemble_step(fluid_stage("move"), fluid_stage("forces"), false, true));
+    const std::vector<std::string> with_solve = {"move", "bodies", "forces"};
+    const std::vector<std::string> without = {"move", "forces"};
+    EXPECT_EQ(alone, scheme == "monolithic" ? with_solve : without) << scheme;
+  }
+  EXPECT_THROW(make_coupling_scheme("implicit"), std::invalid_argument);
 }
 
 TEST(Coupler, NoSpringsOrNoFreeBodyMeansOneExchange) {
@@ -127,7 +172,6 @@ TEST(Coupler, WithoutSubCyclingTheFluidTakesTheSolidStep) {
 // bodies' solver meets at every sub-step together with gravity.
 class HardSurface final : public FluidExchange {
  public:
-  CouplingScheme scheme() const override { return CouplingScheme::kMonolithic; }
   void add_to_problem(CcpProblem& problem, double) override {
     rows.clear();
     for (std::size_t b = 0; b < motion_.size(); ++b) {
@@ -153,7 +197,7 @@ class HardSurface final : public FluidExchange {
 TEST(Coupler, MonolithicRowsHoldABodyOnTheSurface) {
   MultibodySystem system = one_free_block(2.0);  // at z = 1, g = 10
   HardSurface fluid;
-  Coupler coupler(system, 1, &fluid, true);
+  Coupler coupler(system, 1, &fluid, true, "monolithic");
   const double dt = 1e-3;
   double lowest = 1;
   for (int step = 0; step < 1000; ++step) {

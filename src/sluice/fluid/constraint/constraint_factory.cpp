@@ -24,6 +24,7 @@ ModelEntry constraint_entry() {
   entry.make = make_constraint<D>;
   entry.prepare = prepare_constraint_case;
   entry.size.bytes_per_element = 6000;  // measured: docs/output.md
+  entry.schemes = {"monolithic"};
   return entry;
 }
 

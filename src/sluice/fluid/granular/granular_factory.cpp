@@ -23,6 +23,7 @@ ModelEntry granular_entry() {
   entry.make = make_granular<D>;
   entry.prepare = prepare_granular_case;
   entry.size.bytes_per_element = 900;  // measured: docs/output.md
+  entry.schemes = {"monolithic"};
   return entry;
 }
 

@@ -26,6 +26,7 @@ ModelEntry penalty_sph_entry() {
     for (io::BodyConfig& b : free_solid_grains(config)) config.bodies.push_back(std::move(b));
   };
   entry.size.bytes_per_element = 550;  // measured: docs/output.md
+  entry.schemes = {"spring-exchanges"};
   return entry;
 }
 
