@@ -8,10 +8,10 @@
 
 #include "child_runs.hpp"
 #include "sluice/core/errors.hpp"
-#include "sluice/models/shipped_models.hpp"
 #include "sluice/io/compare_table.hpp"
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/io/yaml_reader.hpp"
+#include "sluice/models/shipped_models.hpp"
 #include "sluice/sim/runner.hpp"
 
 namespace sluice {

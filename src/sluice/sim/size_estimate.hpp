@@ -6,8 +6,8 @@
 #include <string>
 
 #include "sluice/exec/gpu_devices.hpp"
-#include "sluice/models/shipped_models.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/models/shipped_models.hpp"
 
 namespace sluice {
 

@@ -2,9 +2,9 @@
 // the layer's spacing, added after the case's own bodies; a fixed layer adds none.
 #include <gtest/gtest.h>
 
-#include "sluice/models/shipped_models.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/models/shipped_models.hpp"
 
 namespace sluice {
 namespace {

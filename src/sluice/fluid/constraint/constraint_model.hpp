@@ -82,7 +82,6 @@ class ConstraintModel final : public ParticleFluid<D> {
     return step;
   }
 
-
   // The fluid particles as bodies after the rigid ones, with gravity in their predicted
   // velocity, and the density rows with their SPOOK targets, compliance and warm start.
   void add_to_problem(CcpProblem& problem, double h) override {

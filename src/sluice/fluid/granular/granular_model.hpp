@@ -90,7 +90,6 @@ class GranularModel final : public ParticleFluid<D> {
     return step;
   }
 
-
   // The spheres as bodies after the rigid ones, with gravity in their predicted velocity, and
   // their contacts with each other, the walls and the bodies.
   void add_to_problem(CcpProblem& problem, double h) override {

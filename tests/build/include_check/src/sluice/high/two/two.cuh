@@ -1,3 +1,4 @@
 #pragma once
 #include "sluice/high/high.hpp"
+// clang-format off
   #  include "sluice/high/one/one.hpp"
