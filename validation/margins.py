@@ -85,6 +85,8 @@ class Figure:
         return self.bar - abs(self.measured)
 
     def text(self, value):
+        if not math.isfinite(value):
+            return "never"  # a time that was not reached within the run
         unit = f" {self.unit}" if self.unit else ""
         return number(value, self.decimals) + unit
 
@@ -160,11 +162,14 @@ def margins_table(reports, held):
             out.append(f"| {release.name} | `{release.test}` | {release.bar_text()} | "
                        f"{release.text(release.measured)} | " + " | ".join(cells) + " |")
     else:
-        out = ["| figure | test | bar | release | baseline |", "|---|---|---|---|---|"]
+        out = ["| figure | test | bar | release | baseline | met (release / baseline) |",
+               "|---|---|---|---|---|---|"]
         for release, baseline in rows:
             other = baseline.text(baseline.measured) if baseline else "not run"
+            met = " / ".join("–" if f is None else ("yes" if f.margin() >= 0 else "no")
+                             for f in (release, baseline))
             out.append(f"| {release.name} | `{release.test}` | {release.bar_text()} | "
-                       f"{release.text(release.measured)} | {other} |")
+                       f"{release.text(release.measured)} | {other} | {met} |")
     return "\n".join(out) + "\n"
 
 
