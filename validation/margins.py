@@ -120,30 +120,43 @@ def read_reports(folder):
     return tests
 
 
+def resolution(figure):
+    """Half the last printed digit: a spread below it does not show in the table."""
+    return 0.5 * 10 ** -figure.decimals if figure.decimals >= 0 else 0
+
+
+def margin_per_spread(release, baseline):
+    """The smaller margin of the two builds over their spread, and whether the spread is below
+    the printed resolution (the ratio then a lower bound, the spread taken as the resolution)."""
+    spread = abs(release.measured - baseline.measured)
+    margin = min(release.margin(), baseline.margin())
+    below = spread < resolution(release)
+    spread = max(spread, resolution(release))
+    return (margin / spread if spread > 0 else math.inf), below
+
+
 def spread_cells(release, baseline):
     """(baseline, spread, margin, margin / spread) cells for a figure in both builds."""
     if baseline is None:
         return "not run", "–", release.text(release.margin()), "release only"
     spread = abs(release.measured - baseline.measured)
-    margin = min(release.margin(), baseline.margin())
-    resolution = 0.5 * 10 ** -max(release.decimals, 0) if release.decimals >= 0 else 0
+    ratio, below = margin_per_spread(release, baseline)
+    ratio_text = f"{ratio:,.2g}" if ratio < 10 else f"{ratio:,.0f}"
     if spread == 0:
-        ratio = "same bits"
-    elif spread < resolution:
-        ratio = f"> {margin / resolution:,.0f}"
-    else:
-        ratio = f"{margin / spread:,.2g}" if margin / spread < 10 else f"{margin / spread:,.0f}"
-    spread_text = "0" if spread == 0 else (f"< {release.text(resolution)}" if spread < resolution
+        ratio_text = f"same bits (> {ratio_text})"
+    elif below:
+        ratio_text = f"> {ratio_text}"
+    finer = Figure(release.test, release.name, f"0;below;0;{release.unit};{release.decimals + 1};held")
+    spread_text = "0" if spread == 0 else (f"< {finer.text(resolution(release))}" if below
                                             else release.text(spread))
-    return baseline.text(baseline.measured), spread_text, release.text(margin), ratio
+    margin = min(release.margin(), baseline.margin())
+    return baseline.text(baseline.measured), spread_text, release.text(margin), ratio_text
 
 
 def ratio_key(release, baseline):
     if baseline is None:
         return (1, release.margin())
-    spread = abs(release.measured - baseline.measured)
-    margin = min(release.margin(), baseline.margin())
-    return (0, margin / spread if spread > 0 else math.inf)
+    return (0, margin_per_spread(release, baseline)[0])
 
 
 def margins_table(reports, held):
