@@ -160,17 +160,25 @@ double deposit_front(const Simulation<2>& sim) {
 // (L_inf - L0) / L0 is 1.2 a for aspect ratios a below about 1.8 and 1.9 a^(2/3) above about
 // 2.8. Each column's smaller side is 20 grains (cases/column_collapse_2d.yaml). At a = 0.5 the
 // bar is 15 % of 1.2 a; a = 2 lies between the laws (2.4 and 3.02), and the bar is the band
-// from 15 % below the one to 15 % above the other.
-void expect_runout(double a, double low, double high) {
+// from 15 % below the one to 15 % above the other. The runout is the mean over `packings`
+// packings of the same column (model.packing_seed 0, 1, ...): one packing's runout hangs on the
+// rounding of its first contacts, and the mean's spread between builds is the smaller.
+void expect_runout(double a, double low, double high, int packings = 1) {
   const double width = a < 1 ? 0.2 / a : 0.2;
-  Simulation<2> sim(load_case("column_collapse_2d.yaml",
-                              {fmt::format("fluid.blocks.0.max=[{},{}]", width, a * width)}));
-  run_until(sim, 1.5, [](const StepClock&) {});
-  const double runout = (deposit_front(sim) - width) / width;
+  double runout = 0;
+  for (int seed = 0; seed < packings; ++seed) {
+    Simulation<2> sim(load_case("column_collapse_2d.yaml",
+                                {fmt::format("fluid.blocks.0.max=[{},{}]", width, a * width),
+                                 fmt::format("model.packing_seed={}", seed)}));
+    run_until(sim, 1.5, [](const StepClock&) {});
+    const double one = (deposit_front(sim) - width) / width;
+    std::printf("column collapse a = %g, packing %d: (L_inf - L0)/L0 = %.3f\n", a, seed, one);
+    runout += one / packings;
+  }
   std::printf(
-      "column collapse a = %g: (L_inf - L0)/L0 = %.3f (Lube: 1.2 a = %.3f, 1.9 a^(2/3) = "
-      "%.3f; bar %.3f-%.3f)\n",
-      a, runout, 1.2 * a, 1.9 * std::pow(a, 2.0 / 3), low, high);
+      "column collapse a = %g: (L_inf - L0)/L0 = %.3f over %d packing(s) (Lube: 1.2 a = %.3f, "
+      "1.9 a^(2/3) = %.3f; bar %.3f-%.3f)\n",
+      a, runout, packings, 1.2 * a, 1.9 * std::pow(a, 2.0 / 3), low, high);
   const std::string name = fmt::format("column collapse a = {}, (L_inf - L0)/L0", a);
   testing::expect_figure({name + ", the band's low end", "", 3}, runout, testing::Bound::above,
                          low);
@@ -187,9 +195,11 @@ TEST(Granular, ColumnCollapseRunoutTallColumn) {
 }
 
 // The rolling friction (0.15) was chosen on a = 0.5 and a = 2 (docs/validation.md); a = 1 is
-// out of that sample: Lube et al.'s 1.2 a within 15 %.
+// out of that sample: Lube et al.'s 1.2 a within 15 %, as the mean of three packings (one
+// packing's runout, 1.138 and 1.101 in the release and baseline builds, lay 2.2 spreads from the
+// band's low end).
 TEST(Granular, ColumnCollapseRunoutOutOfSample) {
-  expect_runout(1.0, 0.85 * 1.2, 1.15 * 1.2);
+  expect_runout(1.0, 0.85 * 1.2, 1.15 * 1.2, 3);
 }
 
 }  // namespace

@@ -59,13 +59,16 @@ class GranularModel final : public ParticleFluid<D> {
     for (int k = 0; k < 3; ++k) spin_[k] = ps.add_scalar_field({spin_names[k], "rad/s"});
     radius_field_ = ps.add_scalar_field({"radius", "m", true});
     std::int32_t next = 0;
+    // Each seed's stream starts 2^40 numbers after the last one's: disjoint for any packing.
+    const std::uint64_t stream = std::uint64_t(p_.packing_seed) << 40;
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!ps.is_fluid(i)) continue;
-      const Real r = p_.radius * (1 - p_.size_spread * unit_random(std::uint64_t(next) * 3 + 2));
+      const Real r =
+          p_.radius * (1 - p_.size_spread * unit_random(stream + std::uint64_t(next) * 3 + 2));
       const Real room = p_.jitter * (0.5 * config_.spacing - r);
       // Sideways by up to `room` in each horizontal direction, from the sphere's number alone.
       for (int a = 0; a + 1 < D; ++a) {
-        ps.position[i][a] += room * (2 * unit_random(std::uint64_t(next) * 3 + a) - 1);
+        ps.position[i][a] += room * (2 * unit_random(stream + std::uint64_t(next) * 3 + a) - 1);
       }
       ps.mass[i] = mass_;
       ps.pressure[i] = 0;

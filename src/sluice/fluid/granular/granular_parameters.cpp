@@ -34,6 +34,10 @@ GranularParameters read_granular_parameters(const io::CaseConfig& config) {
     model.fail("size_spread", fmt::format("must lie in [0, 1), got {}", p.size_spread));
   }
   if (p.jitter > 1) model.fail("jitter", fmt::format("must lie in [0, 1], got {}", p.jitter));
+  p.packing_seed = model.optional<int>("packing_seed", p.packing_seed);
+  if (p.packing_seed < 0) {
+    model.fail("packing_seed", fmt::format("must be 0 or more, got {}", p.packing_seed));
+  }
   p.time_step = model.optional_positive("time_step", 0);
   p.cfl = model.optional_positive("cfl", p.cfl);
   p.envelope = model.optional_positive("envelope", p.envelope);

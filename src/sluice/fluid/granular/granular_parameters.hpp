@@ -15,6 +15,9 @@ struct GranularParameters {
   // Radii spread uniformly over [1 - size_spread, 1] times `radius`, in a fixed pseudo-random
   // way: equal discs (2D) crystallise into a solid; a spread keeps the packing amorphous.
   double size_spread = 0;
+  // Where the random stream of the jitter and the radii starts: another seed is another packing
+  // of the same statistics (a check averages its figure over several).
+  int packing_seed = 0;
   double friction = 0;  // Coulomb mu between spheres (with a wall or body: the smaller)
   double cohesion = 0;  // the pull a contact holds [N]
   // Rolling resistance mu_r: a contact resists rolling and spinning with up to mu_r times the
