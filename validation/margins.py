@@ -222,6 +222,27 @@ def summary_table(reports):
     return "\n".join(out) + "\n"
 
 
+# Tables of a section's own checks: the table's name in docs/validation.md, and the tests (a
+# regular expression on SUITE.NAME) whose figures it lists.
+SECTIONS = [
+    ("b5-parked", r"^ParkedVehicle\."),
+]
+
+
+def section_table(reports, pattern):
+    """Every figure of the tests matching pattern, as both builds measured it, in test order."""
+    out = ["| figure | bar | release | baseline | test |", "|---|---|---|---|---|"]
+    for test in sorted(t for t in reports["release"] if re.search(pattern, t)):
+        other = reports["baseline"].get(test, (None, None, {}))[2]
+        for name, figure in reports["release"][test][2].items():
+            baseline = other.get(name)
+            mark = "" if figure.held else " (a limit)"
+            out.append(f"| {name}{mark} | {figure.bar_text()} | {figure.text(figure.measured)} | "
+                       f"{baseline.text(baseline.measured) if baseline else 'not run'} | "
+                       f"`{test}` |")
+    return "\n".join(out) + "\n"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     for build in BUILDS:
@@ -243,6 +264,8 @@ def main():
     write_table("validation.md", "summary", note + "\n\n" + summary_table(reports))
     write_table("validation.md", "margins", note + "\n\n" + margins_table(reports, True))
     write_table("validation.md", "limits", note + "\n\n" + margins_table(reports, False))
+    for name, pattern in SECTIONS:
+        write_table("validation.md", name, note + "\n\n" + section_table(reports, pattern))
 
 
 if __name__ == "__main__":
