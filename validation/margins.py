@@ -226,6 +226,8 @@ def summary_table(reports):
 # regular expression on SUITE.NAME) whose figures it lists.
 SECTIONS = [
     ("b5-parked", r"^ParkedVehicle\."),
+    ("complementarity-granular", r"^Complementarity|^Joints\.|^Granular\."),
+    ("constraint-checks", r"^ConstraintFluid\.|^CaseFloatingBox\.DraftByArchimedesWithConstraintFluid$"),
 ]
 
 
