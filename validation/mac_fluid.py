@@ -85,6 +85,12 @@ def centre_lines(velocity, n):
     return centres, u, v
 
 
+def threads(stats):
+    """'1 thread', '2 threads' from a run's statistics."""
+    n = stats.get("threads", 0)
+    return f"{n} thread" + ("" if n == 1 else "s")
+
+
 def f4(no_run):
     ghia_u, ghia_v = read_ghia()
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.4))
@@ -103,7 +109,7 @@ def f4(no_run):
         print(f"F4 mac {n} x {n}: largest difference from Ghia {worst:.4f} of the lid speed; "
               f"wall {stats['wall_seconds']:.1f} s, {stats['steps']} steps")
         rows.append(f"| {n} x {n} | {worst:.4f} | {stats['steps']} | "
-                    f"{stats['wall_seconds']:.1f} s ({stats.get('threads', '?')} threads) |")
+                    f"{stats['wall_seconds']:.1f} s ({threads(stats)}) |")
         left.plot(u, centres, "-", color=colour, label=f"sluice mac, {n} x {n} (largest diff. "
                                                       f"{worst:.3f})")
         right.plot(centres, v, "-", color=colour, label=f"sluice mac, {n} x {n}")
