@@ -2,6 +2,8 @@
 // layers of boundary particles behind tank sides, boxes and planes.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -9,6 +11,18 @@
 #include "sluice/geometry/axis_box.hpp"
 
 namespace sluice {
+
+// How many lattice points (or cells) of spacing dx a box of that extent holds: the cells along
+// each of the case's axes (2D: x and z), multiplied; a double, to count without overflow the
+// sizes a mistyped spacing gives, before anything is allocated.
+inline double lattice_points(const Vec3& extent, double dx, int dimension) {
+  double n = 1;
+  for (int a = 0; a < 3; ++a) {
+    if (dimension == 2 && a == 1) continue;
+    n *= std::ceil(std::max(extent[a], 0.0) / dx);
+  }
+  return n;
+}
 
 // Lattice points min + (k + 1/2) dx inside the box.
 template <int D>

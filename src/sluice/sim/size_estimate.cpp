@@ -8,6 +8,7 @@
 
 #include "sluice/core/errors.hpp"
 #include "sluice/core/types.hpp"
+#include "sluice/geometry/sampling.hpp"
 
 namespace sluice {
 
@@ -22,16 +23,6 @@ constexpr double kBodyParticleBytes = 500;
 // Product of the box's extents along the case's axes (2D: x and z).
 double measure(const Vec3& extent, int dimension) {
   return dimension == 2 ? extent[0] * extent[2] : extent[0] * extent[1] * extent[2];
-}
-
-// Lattice points of spacing dx in a box: the cells along each axis, multiplied.
-double lattice_points(const Vec3& extent, double dx, int dimension) {
-  double n = 1;
-  for (int a = 0; a < 3; ++a) {
-    if (dimension == 2 && a == 1) continue;
-    n *= std::ceil(std::max(extent[a], 0.0) / dx);
-  }
-  return n;
 }
 
 // A bound on the volume of a body: its shape's, or its mesh's bounding box's.

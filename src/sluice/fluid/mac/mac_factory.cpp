@@ -1,9 +1,9 @@
 #include "sluice/fluid/mac/mac_factory.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "sluice/fluid/mac/mac_model.hpp"
+#include "sluice/geometry/sampling.hpp"
 
 namespace sluice {
 
@@ -15,13 +15,7 @@ double grid_cells(const io::CaseConfig& config) {
   double h = config.spacing;
   if (config.model["cell_size"]) h = config.model["cell_size"].as<double>(h);
   if (!(std::isfinite(h) && h > 0)) h = config.spacing;
-  const Vec3 extent = config.domain.max - config.domain.min;
-  double cells = 1;
-  for (int a = 0; a < 3; ++a) {
-    if (config.dimension == 2 && a == 1) continue;
-    cells *= std::ceil(std::max(extent[a], 0.0) / h);
-  }
-  return cells;
+  return lattice_points(config.domain.max - config.domain.min, h, config.dimension);
 }
 
 template <int D>
