@@ -97,75 +97,86 @@ struct CudaBackend {
     cuda_check(cudaGetLastError(), "a loop's launch");
   }
 
+  // What the sort, the scan and the reductions keep between calls, owned by the run that calls
+  // them and grown as needed (a cudaMalloc per call would cost more than the small steps it
+  // serves): the sort's second buffers, the values a reduction reduces (and its result), and
+  // CUB's temporary storage.
+  class Workspace {
+   public:
+    void* temporary(std::size_t bytes) {
+      if (temporary_.size() < bytes) temporary_.resize(bytes);
+      return temporary_.data();
+    }
+    Array<std::uint32_t> other_keys, other_values;
+    Array<double> values;
+
+   private:
+    Array<unsigned char> temporary_;
+  };
+
   template <class Value>
-  static double max_of(std::size_t n, const Value& value, Array<double>& scratch) {
+  static double max_of(std::size_t n, const Value& value, Workspace& workspace) {
     if (n == 0) return -std::numeric_limits<double>::infinity();
-    return reduce(n, value, scratch, "cub::DeviceReduce::Max",
+    return reduce(n, value, workspace, "cub::DeviceReduce::Max",
                   [](auto&&... args) { return cub::DeviceReduce::Max(args...); });
   }
 
   template <class Value>
-  static double sum_of(std::size_t n, const Value& value, Array<double>& scratch) {
+  static double sum_of(std::size_t n, const Value& value, Workspace& workspace) {
     if (n == 0) return 0;
-    return reduce(n, value, scratch, "cub::DeviceReduce::Sum",
+    return reduce(n, value, workspace, "cub::DeviceReduce::Sum",
                   [](auto&&... args) { return cub::DeviceReduce::Sum(args...); });
   }
 
   // Stable, by the keys' lowest `bits` bits (CUB's radix sort keeps equal keys in order).
   static void sort_by_key(Array<std::uint32_t>& keys, Array<std::uint32_t>& values, std::size_t n,
-                          int bits) {
+                          int bits, Workspace& workspace) {
     if (n == 0) return;
-    static Array<std::uint32_t> other_keys, other_values;
-    other_keys.resize(keys.size());
-    other_values.resize(values.size());
-    cub::DoubleBuffer<std::uint32_t> k(keys.data(), other_keys.data());
-    cub::DoubleBuffer<std::uint32_t> v(values.data(), other_values.data());
+    workspace.other_keys.resize(keys.size());
+    workspace.other_values.resize(values.size());
+    cub::DoubleBuffer<std::uint32_t> k(keys.data(), workspace.other_keys.data());
+    cub::DoubleBuffer<std::uint32_t> v(values.data(), workspace.other_values.data());
     std::size_t bytes = 0;
     cuda_check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, k, v, static_cast<int>(n), 0, bits),
                "cub::DeviceRadixSort::SortPairs");
-    cuda_check(cub::DeviceRadixSort::SortPairs(workspace(bytes), bytes, k, v, static_cast<int>(n),
-                                               0, bits),
+    cuda_check(cub::DeviceRadixSort::SortPairs(workspace.temporary(bytes), bytes, k, v,
+                                               static_cast<int>(n), 0, bits),
                "cub::DeviceRadixSort::SortPairs");
-    if (k.Current() != keys.data()) keys.swap(other_keys);
-    if (v.Current() != values.data()) values.swap(other_values);
+    if (k.Current() != keys.data()) keys.swap(workspace.other_keys);
+    if (v.Current() != values.data()) values.swap(workspace.other_values);
   }
 
-  static void inclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n) {
+  static void inclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n,
+                             Workspace& workspace) {
     if (n == 0) return;
     std::size_t bytes = 0;
     cuda_check(cub::DeviceScan::InclusiveSum(nullptr, bytes, in, out, static_cast<int>(n)),
                "cub::DeviceScan::InclusiveSum");
-    cuda_check(cub::DeviceScan::InclusiveSum(workspace(bytes), bytes, in, out, static_cast<int>(n)),
+    cuda_check(cub::DeviceScan::InclusiveSum(workspace.temporary(bytes), bytes, in, out,
+                                             static_cast<int>(n)),
                "cub::DeviceScan::InclusiveSum");
   }
 
  private:
   static unsigned blocks(std::size_t n) { return static_cast<unsigned>((n + kBlock - 1) / kBlock); }
 
-  // value(i) for i in [0, n) into scratch, reduced there by CUB's `reduction` (called as
-  // reduction(workspace, bytes, in, out, n)) into scratch[n], which comes back.
+  // value(i) for i in [0, n) into the workspace's values, reduced there by CUB's `reduction`
+  // (called as reduction(temporary, bytes, in, out, n)) into values[n], which comes back.
   template <class Value, class Reduction>
-  static double reduce(std::size_t n, const Value& value, Array<double>& scratch, const char* what,
+  static double reduce(std::size_t n, const Value& value, Workspace& workspace, const char* what,
                        Reduction&& reduction) {
-    if (scratch.size() < n + 1) scratch.resize(n + 1);
-    evaluate_each<<<blocks(n), kBlock>>>(n, value, scratch.data());
+    Array<double>& values = workspace.values;
+    if (values.size() < n + 1) values.resize(n + 1);
+    evaluate_each<<<blocks(n), kBlock>>>(n, value, values.data());
     cuda_check(cudaGetLastError(), "a reduction's launch");
-    double* in = scratch.data();
+    double* in = values.data();
     const int count = static_cast<int>(n);
     std::size_t bytes = 0;
     cuda_check(reduction(nullptr, bytes, in, in + n, count), what);
-    cuda_check(reduction(workspace(bytes), bytes, in, in + n, count), what);
+    cuda_check(reduction(workspace.temporary(bytes), bytes, in, in + n, count), what);
     double result = 0;
-    scratch.to_host(&result, 1, n);
+    values.to_host(&result, 1, n);
     return result;
-  }
-
-  // CUB's temporary storage, kept between calls and grown as needed (a cudaMalloc per call
-  // would cost more than the small steps it serves).
-  static void* workspace(std::size_t bytes) {
-    static Array<unsigned char> space;
-    if (space.size() < bytes) space.resize(bytes);
-    return space.data();
   }
 };
 

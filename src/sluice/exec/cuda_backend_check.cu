@@ -43,6 +43,7 @@ std::string check_cuda_backend(std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) host[i] = 2 * static_cast<std::uint32_t>(i);
   expect(back == host, "for_each");
 
+  CudaBackend::Workspace workspace;
   Array keys, values;
   keys.resize(n);
   values.resize(n);
@@ -53,7 +54,7 @@ std::string check_cuda_backend(std::size_t n) {
   }
   keys.from_host(k.data(), n);
   values.from_host(v.data(), n);
-  CudaBackend::sort_by_key(keys, values, n, 7);
+  CudaBackend::sort_by_key(keys, values, n, 7, workspace);
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(),
@@ -66,14 +67,13 @@ std::string check_cuda_backend(std::size_t n) {
   in.resize(n);
   out.resize(n);
   in.from_host(ones.data(), n);
-  CudaBackend::inclusive_scan(in.data(), out.data(), n);
+  CudaBackend::inclusive_scan(in.data(), out.data(), n, workspace);
   out.to_host(sums.data(), n);
   std::vector<std::uint32_t> expected(n);
   std::iota(expected.begin(), expected.end(), 1u);
   expect(sums == expected, "inclusive_scan");
 
-  CudaBackend::Array<double> scratch;
-  expect(CudaBackend::max_of(n, Hump{n}, scratch) == 0.0, "max_of");
+  expect(CudaBackend::max_of(n, Hump{n}, workspace) == 0.0, "max_of");
   return report;
 }
 

@@ -39,19 +39,22 @@ struct HostBackend {
     std::vector<T> values_;
   };
 
+  // What a device keeps between its sorts, scans and reductions: the host needs nothing.
+  struct Workspace {};
+
   template <class Body>
   static void for_each(std::size_t n, const Body& body) {
     Default::for_each(n, body);
   }
 
   template <class Value>
-  static double max_of(std::size_t n, const Value& value, Array<double>&) {
+  static double max_of(std::size_t n, const Value& value, Workspace&) {
     return Default::max_of(n, value);
   }
 
   // In index order, as the host's own loops sum.
   template <class Value>
-  static double sum_of(std::size_t n, const Value& value, Array<double>&) {
+  static double sum_of(std::size_t n, const Value& value, Workspace&) {
     double sum = 0;
     for (std::size_t i = 0; i < n; ++i) sum += value(i);
     return sum;
@@ -59,7 +62,7 @@ struct HostBackend {
 
   // Stable: particles keep their order within a cell, as the host's counting sort keeps it.
   static void sort_by_key(Array<std::uint32_t>& keys, Array<std::uint32_t>& values, std::size_t n,
-                          int /*bits*/) {
+                          int /*bits*/, Workspace&) {
     std::vector<std::uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);
     const std::uint32_t* k = keys.data();
@@ -74,7 +77,8 @@ struct HostBackend {
     values.from_host(sorted_values.data(), n);
   }
 
-  static void inclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n) {
+  static void inclusive_scan(const std::uint32_t* in, std::uint32_t* out, std::size_t n,
+                             Workspace&) {
     std::inclusive_scan(in, in + n, out);
   }
 };

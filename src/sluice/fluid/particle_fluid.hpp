@@ -90,10 +90,6 @@ class ParticleFluid : public FluidSystem {
   }
 
  private:
-  // Whether a frame needs this field: those marked for output, the positions, and the body
-  // points (for the `body` array).
-  static bool shown(const FieldLabel& label);
-
   // Puts back on a wall's surface, with its velocity into the wall taken away, a fluid particle
   // found within the wall's particle layers: one squeezed through where a body rests on the
   // wall (the gap under a wheel is thinner than a spacing), which the layers' pressure alone

@@ -12,11 +12,6 @@
 
 namespace sluice {
 
-template <int D>
-bool ParticleFluid<D>::shown(const FieldLabel& label) {
-  return label.output || label.name == "position" || label.name == "body_point";
-}
-
 // The particles as points, with every field marked for output as Float32 (vectors in 3D) or
 // Int32, and the body of each body particle.
 template <int D>
@@ -101,16 +96,14 @@ std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const
 template <int D>
 void ParticleFluid<D>::remember_good(double time) {
   refresh_host();
-  last_good_.assign_fields(state_.particles, shown);
+  last_good_.assign_fields(state_.particles, shown_in_frames);
   last_good_time_ = time;
 }
 
 // The class is instantiated in particle_fluid.cpp; these are its members defined here.
-template bool ParticleFluid<2>::shown(const FieldLabel&);
 template io::PolyFrame ParticleFluid<2>::frame_of(const ParticleSet<2>&) const;
 template std::optional<std::string> ParticleFluid<2>::check(const StepClock&) const;
 template void ParticleFluid<2>::remember_good(double);
-template bool ParticleFluid<3>::shown(const FieldLabel&);
 template io::PolyFrame ParticleFluid<3>::frame_of(const ParticleSet<3>&) const;
 template std::optional<std::string> ParticleFluid<3>::check(const StepClock&) const;
 template void ParticleFluid<3>::remember_good(double);

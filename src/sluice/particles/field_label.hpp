@@ -11,4 +11,10 @@ struct FieldLabel {
   bool output = false;
 };
 
+// Whether a frame needs this field: those marked for output, the positions, and the body points
+// (for the `body` array). The divergence guard's last good state keeps these.
+inline bool shown_in_frames(const FieldLabel& label) {
+  return label.output || label.name == "position" || label.name == "body_point";
+}
+
 }  // namespace sluice

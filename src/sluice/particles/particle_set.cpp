@@ -1,6 +1,9 @@
 #include "sluice/particles/particle_set.hpp"
 
 #include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <type_traits>
 
 #include "sluice/exec/policy.hpp"
 
@@ -32,6 +35,71 @@ void ParticleSet<D>::reorder(const std::vector<std::uint32_t>& order) {
   for (auto& f : scalar_fields_) permute(f.values, order);
   for (auto& f : vector_fields_) permute(f.values, order);
 }
+
+template <int D>
+template <class T>
+T* ParticleSet<D>::components(const std::string& name) {
+  T* found = nullptr;
+  bool exists = false;
+  for_each_field([&](const FieldLabel& label, auto& values) {
+    using Components = FieldComponents<typename std::decay_t<decltype(values)>::value_type>;
+    if (label.name != name) return;
+    exists = true;
+    if constexpr (std::is_same_v<typename Components::type, T>) {
+      found = reinterpret_cast<T*>(values.data());
+    } else {
+      throw std::logic_error("particle field " + name + " is not of the type asked for");
+    }
+  });
+  if (!exists) throw std::logic_error("no particle field " + name);
+  return found;
+}
+
+template <int D>
+std::size_t ParticleSet<D>::bytes_per_particle() const {
+  std::size_t bytes = 0;
+  for_each_field([&](const FieldLabel&, const auto& values) {
+    bytes += sizeof(typename std::decay_t<decltype(values)>::value_type);
+  });
+  return bytes;
+}
+
+template <int D>
+void ParticleSet<D>::pack(const std::vector<std::uint32_t>& which,
+                          std::vector<unsigned char>& buffer) const {
+  const std::size_t start = buffer.size();
+  buffer.resize(start + which.size() * bytes_per_particle());
+  unsigned char* out = buffer.data() + start;
+  for_each_field([&](const FieldLabel&, const auto& values) {
+    using Element = typename std::decay_t<decltype(values)>::value_type;
+    using Components = FieldComponents<Element>;
+    const auto* from = reinterpret_cast<const typename Components::type*>(values.data());
+    for (const std::uint32_t i : which) {
+      std::memcpy(out, from + Components::width * i, sizeof(Element));
+      out += sizeof(Element);
+    }
+  });
+}
+
+template <int D>
+void ParticleSet<D>::unpack_append(const unsigned char* buffer, std::size_t count) {
+  const std::size_t start = size();
+  for_each_field([&](const FieldLabel&, auto& values) {
+    using Element = typename std::decay_t<decltype(values)>::value_type;
+    using Components = FieldComponents<Element>;
+    values.resize(start + count);
+    auto* to = reinterpret_cast<typename Components::type*>(values.data() + start);
+    std::memcpy(to, buffer, count * sizeof(Element));
+    buffer += count * sizeof(Element);
+  });
+}
+
+#define SLUICE_COMPONENTS(D, T) template T* ParticleSet<D>::components<T>(const std::string&);
+SLUICE_COMPONENTS(2, Real)
+SLUICE_COMPONENTS(3, Real)
+SLUICE_COMPONENTS(2, std::int32_t)
+SLUICE_COMPONENTS(3, std::int32_t)
+#undef SLUICE_COMPONENTS
 
 template class ParticleSet<2>;
 template class ParticleSet<3>;

@@ -26,6 +26,24 @@ struct FieldHandle {
   std::size_t index = 0;
 };
 
+// How a field's values lie in memory as plain components: `type` and `width` of them a
+// particle (a vector's D reals; a kind's 32-bit integer).
+template <class Element>
+struct FieldComponents {
+  using type = Element;
+  static constexpr int width = 1;
+};
+template <class Scalar, int Rows, int Options, int MaxRows, int MaxCols>
+struct FieldComponents<Eigen::Matrix<Scalar, Rows, 1, Options, MaxRows, MaxCols>> {
+  using type = Scalar;
+  static constexpr int width = Rows;
+};
+template <>
+struct FieldComponents<ParticleKind> {
+  using type = std::int32_t;
+  static constexpr int width = 1;
+};
+
 template <int D>
 class ParticleSet {
  public:
@@ -73,6 +91,29 @@ class ParticleSet {
   void for_each_field(Visit&& visit) const {
     visit_fields(*this, visit);
   }
+  template <class Visit>
+  void for_each_field(Visit&& visit) {
+    visit_fields(*this, visit);
+  }
+
+  // The components of the field called `name` as one array: D reals a particle for a vector
+  // field, one real or one 32-bit integer (the kinds too) for the others. T is Real or
+  // std::int32_t; a field of another type, or none of that name, is a logic error.
+  template <class T>
+  T* components(const std::string& name);
+  template <class T>
+  const T* components(const std::string& name) const {
+    return const_cast<ParticleSet&>(*this).template components<T>(name);
+  }
+
+  // Bytes a particle takes over all fields.
+  std::size_t bytes_per_particle() const;
+
+  // Every field of the particles `which`, one after another, appended to `buffer`; and the
+  // particles so packed (`count` of them, by a set of the same fields) appended to this set.
+  // What halo exchanges and migrations send.
+  void pack(const std::vector<std::uint32_t>& which, std::vector<unsigned char>& buffer) const;
+  void unpack_append(const unsigned char* buffer, std::size_t count);
 
   // Makes this set hold the fields of `from`: the values of those for which keep(label) holds,
   // the others empty, with their memory given back (the guard's last good state keeps only

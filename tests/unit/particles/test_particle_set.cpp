@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <string>
 #include <type_traits>
 
@@ -105,6 +107,46 @@ TEST(ParticleSet, AssignFieldsGivesAnEmptySetTheSameFields) {
   from.for_each_field(
       [&](const FieldLabel& label, const auto&) { from_names.push_back(label.name); });
   EXPECT_EQ(names, from_names);
+}
+
+TEST(ParticleSet, ComponentsAreTheFieldsValuesByName) {
+  ParticleSet<3> ps = tagged_set();
+  EXPECT_EQ(ps.components<Real>("velocity"), ps.velocity.front().data());
+  EXPECT_EQ(ps.components<Real>("velocity")[3 * 4 + 2], tag(4, 1));  // particle 4's z
+  EXPECT_EQ(ps.components<Real>("phi")[7], tag(7, 7));
+  EXPECT_EQ(ps.components<std::int32_t>("kind")[6], 2);  // ParticleKind's integer
+  EXPECT_EQ(ps.components<std::int32_t>("cluster")[5], static_cast<std::int32_t>(tag(5, 6)));
+  EXPECT_THROW(ps.components<Real>("kind"), std::logic_error);
+  EXPECT_THROW(ps.components<Real>("no such field"), std::logic_error);
+  // Three vectors, four scalars, three integers: 9 + 4 reals, 3 integers.
+  EXPECT_EQ(ps.bytes_per_particle(), 13 * sizeof(Real) + 3 * sizeof(std::int32_t));
+}
+
+TEST(ParticleSet, PackedParticlesUnpackIntoASetOfTheSameFields) {
+  const ParticleSet<3> from = tagged_set();
+  ParticleSet<3> to = from;
+  const std::vector<std::uint32_t> which{11, 2, 7};
+  std::vector<unsigned char> buffer{42};  // packing appends to what the buffer holds
+  from.pack(which, buffer);
+  ASSERT_EQ(buffer.size(), 1 + which.size() * from.bytes_per_particle());
+  to.unpack_append(buffer.data() + 1, which.size());
+  ASSERT_EQ(to.size(), from.size() + which.size());
+  // The set's own particles are as they were; the appended ones are copies of the packed
+  // ones, every field.
+  std::vector<const void*> fields_of_from;
+  from.for_each_field(
+      [&](const FieldLabel&, const auto& values) { fields_of_from.push_back(&values); });
+  std::size_t f = 0;
+  to.for_each_field([&](const FieldLabel& label, const auto& values) {
+    const auto& old = *static_cast<const std::decay_t<decltype(values)>*>(fields_of_from.at(f++));
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      EXPECT_EQ(first_number(values[i]), first_number(old[i])) << label.name << " " << i;
+    }
+    for (std::size_t k = 0; k < which.size(); ++k) {
+      EXPECT_TRUE(values[from.size() + k] == old[which[k]]) << label.name << " " << k;
+    }
+  });
+  EXPECT_EQ(f, fields_of_from.size());
 }
 
 }  // namespace

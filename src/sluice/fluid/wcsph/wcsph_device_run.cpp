@@ -23,15 +23,11 @@ bool wcsph_device_available(WcsphDevice device, std::string& why) {
 }
 
 double wcsph_device_bytes_per_particle(int dimension) {
-  // Reals: 5 vectors and 5 scalars, the gather's scratch (a vector and a scalar), the
-  // reductions' scratch, the last good state (2 vectors, 2 scalars); 32-bit integers: kind
-  // and body point, the gather's scratch, the sort's keys and values (and the sort's own
-  // copies of both), the scan's flags, the lists by kind, the last good kind and body point;
-  // the packed copy: 15 floats and a count.
-  const int d = dimension;
-  const double reals = (5 * d + 5) + (d + 1) + 1 + (2 * d + 2);
-  const double integers = 2 + 1 + 4 + 1 + 1 + 2;
-  return reals * sizeof(Real) + integers * 4 + 16 * 4;
+  auto with_wcsph_fields = [](auto layout) {
+    add_wcsph_fields(layout);
+    return wcsph_device_run_bytes_per_particle(layout);
+  };
+  return dimension == 2 ? with_wcsph_fields(ParticleSet<2>()) : with_wcsph_fields(ParticleSet<3>());
 }
 
 template <int D, class Kernel>

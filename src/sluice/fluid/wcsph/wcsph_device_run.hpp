@@ -27,8 +27,9 @@ enum class WcsphDevice { kCpu, kGpu, kEmulated };
 // without CUDA, no GPU found).
 bool wcsph_device_available(WcsphDevice device, std::string& why);
 
-// Bytes of device memory a particle takes in a run of `dimension` (2 or 3): the run's arrays,
-// the sort's and the gather's scratch, the lists by kind, the last good state, the packed copy.
+// Bytes of device memory a particle takes in a run of `dimension` (2 or 3): its fields, the
+// last good state of those a frame shows, the gather's and the sort's scratch, the lists by
+// kind, the packed copy.
 double wcsph_device_bytes_per_particle(int dimension);
 
 template <int D>
@@ -41,14 +42,15 @@ class WcsphDeviceRun {
   virtual ~WcsphDeviceRun() = default;
   // What runs it, for the run's header: the GPU's name, or "emulated".
   virtual std::string name() const = 0;
-  // Bytes of device memory per particle (the run's arrays, the sort's and the last good state).
+  // Bytes of device memory per particle (its fields, the sort's scratch, the last good state).
   virtual double bytes_per_particle() const = 0;
 
-  // Copies every field of `host` (its arrays and size) to the device, or back. The device's
-  // order is the host's after an upload; after a download the host holds the device's order,
-  // which is sorted by cell as of the step's neighbour sort.
-  virtual void upload(const WcsphFields<D>& host) = 0;
-  virtual void download(const WcsphFields<D>& host) const = 0;
+  // Copies every field of `host` (the engine's and wcsph's, whatever their count: the device's
+  // set mirrors the host's labels) and the body points' accelerations to the device, or back.
+  // The device's order is the host's after an upload; after a download the host holds the
+  // device's order, which is sorted by cell as of the step's neighbour sort.
+  virtual void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) = 0;
+  virtual void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const = 0;
 
   // The stages of a step, in the model's order.
   virtual void kick_drift(Real dt) = 0;
@@ -75,9 +77,10 @@ class WcsphDeviceRun {
 
   // Whether a particle went wrong (particle_check.hpp); the host's copy then names it.
   virtual bool any_problem() const = 0;
-  // Keeps the present state as the last good one (on the device), and copies it back.
+  // Keeps the present state of the fields a frame shows as the last good one (on the device),
+  // and copies it back into a set of the host's fields.
   virtual void remember() = 0;
-  virtual void download_remembered(const WcsphFields<D>& host) const = 0;
+  virtual void download_remembered(ParticleSet<D>& host) const = 0;
 };
 
 // What a device run needs besides the particles: the loop bodies' constants, the cell grid

@@ -1,11 +1,12 @@
 // The device run of wcsph_device_run.hpp over a backend that owns memory and runs loops:
 //   Backend::Array<T>             memory for n values: data(), size(), resize(n),
 //                                 from_host(p, n), to_host(p, n), copy_from(other)
+//   Backend::Workspace            what the calls below keep between calls (owned by the caller)
 //   Backend::for_each(n, body)    body(i) for i in [0, n)
-//   Backend::max_of(n, value, scratch)  the largest value(i)
-//   Backend::sum_of(n, value, scratch)  the sum of value(i)
-//   Backend::sort_by_key(keys, values, n, bits)   stable, by the keys' lowest `bits` bits
-//   Backend::inclusive_scan(in, out, n)           out[k] = in[0] + ... + in[k]
+//   Backend::max_of(n, value, workspace)  the largest value(i)
+//   Backend::sum_of(n, value, workspace)  the sum of value(i)
+//   Backend::sort_by_key(keys, values, n, bits, workspace)  stable, by the keys' lowest `bits` bits
+//   Backend::inclusive_scan(in, out, n, workspace)          out[k] = in[0] + ... + in[k]
 //   Backend::finish()             returns once every loop and copy asked for is done
 //   Backend::name()
 // Included by wcsph_device_host.cpp (the host's threads) and wcsph_device_cuda.cu (CUDA), so
@@ -23,6 +24,7 @@
 #include "sluice/fluid/wcsph/adami_walls.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/fluid/wcsph/wcsph_loop_bodies.hpp"
+#include "sluice/particles/device_particle_set.hpp"
 
 namespace sluice {
 
@@ -57,19 +59,6 @@ struct CellStart {
       }
     }
     start[c] = static_cast<std::uint32_t>(low);
-  }
-};
-
-// to[k] = from[order[k]], `width` values per particle.
-template <class T>
-struct Gather {
-  const T* from;
-  T* to;
-  const std::uint32_t* order;
-  int width;
-  SLUICE_HOST_DEVICE void operator()(std::size_t k) const {
-    const std::size_t i = order[k];
-    for (int a = 0; a < width; ++a) to[width * k + a] = from[width * i + a];
   }
 };
 
@@ -174,6 +163,15 @@ struct BadParticle {
 
 }  // namespace device_bodies
 
+// Device bytes a particle takes in a run over a set of `layout`'s fields: those of the set
+// (device_particle_set.hpp), and the run's own: a double of the reductions' scratch; 32-bit
+// integers: the sort's keys and values and its copies of both, the scan's flags, the lists by
+// kind; the packed copy, 15 floats and a count.
+template <int D>
+double wcsph_device_run_bytes_per_particle(const ParticleSet<D>& layout) {
+  return device_bytes_per_particle(layout, shown_in_frames) + sizeof(double) + 6 * 4 + 16 * 4;
+}
+
 template <int D, class Kernel, class Backend>
 class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   template <class T>
@@ -219,50 +217,30 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
 
   std::string name() const override { return Backend::name(); }
 
-  double bytes_per_particle() const override { return wcsph_device_bytes_per_particle(D); }
+  double bytes_per_particle() const override { return bytes_per_particle_; }
 
-  void upload(const WcsphFields<D>& host) override {
-    n_ = host.size;
-    resize_all();
+  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) override {
+    particles_.upload(host);
+    n_ = particles_.size();
+    bytes_per_particle_ = wcsph_device_run_bytes_per_particle(host);
+    resize_scratch();
     // No stage changes a particle's kind: the count of fluid particles is the host's.
     fluid_count_ = 0;
-    for (std::size_t i = 0; i < n_; ++i) fluid_count_ += host.kind[i] == 0 ? 1 : 0;
+    for (std::size_t i = 0; i < n_; ++i) fluid_count_ += host.is_fluid(i) ? 1 : 0;
     const std::uint32_t zero = 0;
     fluid_before_.from_host(&zero, 1);
-    position_.from_host(host.position, D * n_);
-    velocity_.from_host(host.velocity, D * n_);
-    density_.from_host(host.density, n_);
-    pressure_.from_host(host.pressure, n_);
-    mass_.from_host(host.mass, n_);
-    kind_.from_host(host.kind, n_);
-    body_point_.from_host(host.body_point, n_);
-    acceleration_.from_host(host.acceleration, D * n_);
-    density_rate_.from_host(host.density_rate, n_);
-    half_velocity_.from_host(host.half_velocity, D * n_);
-    half_density_.from_host(host.half_density, n_);
-    wall_velocity_.from_host(host.wall_velocity, D * n_);
-    point_acceleration_.from_host(host.body_point_acceleration, 3 * setup_.body_point_count);
+    if (!point_acceleration.empty())
+      point_acceleration_.from_host(point_acceleration.front().data(), 3 * setup_.body_point_count);
     // The host's set is sorted by cell: this finds the device's cell starts. The packed copy
     // is the one the host's last rates read, for the bodies' first loads.
     sort_by_cell();
     pack(true);
   }
 
-  void download(const WcsphFields<D>& host) const override {
-    position_.to_host(host.position, D * n_);
-    velocity_.to_host(host.velocity, D * n_);
-    density_.to_host(host.density, n_);
-    pressure_.to_host(host.pressure, n_);
-    mass_.to_host(const_cast<Real*>(host.mass), n_);
-    kind_.to_host(const_cast<std::int32_t*>(host.kind), n_);
-    body_point_.to_host(const_cast<std::int32_t*>(host.body_point), n_);
-    acceleration_.to_host(host.acceleration, D * n_);
-    density_rate_.to_host(host.density_rate, n_);
-    half_velocity_.to_host(host.half_velocity, D * n_);
-    half_density_.to_host(host.half_density, n_);
-    wall_velocity_.to_host(host.wall_velocity, D * n_);
-    point_acceleration_.to_host(const_cast<Real*>(host.body_point_acceleration),
-                                3 * setup_.body_point_count);
+  void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
+    particles_.download(host);
+    if (!point_acceleration.empty())
+      point_acceleration_.to_host(point_acceleration.front().data(), 3 * setup_.body_point_count);
   }
 
   void kick_drift(Real dt) override {
@@ -270,24 +248,13 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   void sort_by_cell() override {
-    Backend::for_each(n_,
-                      device_bodies::KeepOutOfWalls<D>{walls_, kind_.data(), position_.data(),
-                                                       velocity_.data(), half_velocity_.data()});
+    const WcsphFields<D> f = fields();
+    Backend::for_each(n_, device_bodies::KeepOutOfWalls<D>{walls_, f.kind, f.position, f.velocity,
+                                                           f.half_velocity});
     Backend::for_each(
-        n_, device_bodies::CellKey<D>{position_.data(), setup_.cells, key_.data(), order_.data()});
-    Backend::sort_by_key(key_, order_, n_, key_bits_);
-    gather(position_, D);
-    gather(velocity_, D);
-    gather(density_, 1);
-    gather(pressure_, 1);
-    gather(mass_, 1);
-    gather(kind_, 1);
-    gather(body_point_, 1);
-    gather(acceleration_, D);
-    gather(density_rate_, 1);
-    gather(half_velocity_, D);
-    gather(half_density_, 1);
-    gather(wall_velocity_, D);
+        n_, device_bodies::CellKey<D>{f.position, setup_.cells, key_.data(), order_.data()});
+    Backend::sort_by_key(key_, order_, n_, key_bits_, workspace_);
+    particles_.gather(order_.data());
     Backend::for_each(setup_.cell_count + 1,
                       device_bodies::CellStart{key_.data(), n_, cell_start_.data()});
     list_by_kind();
@@ -320,18 +287,18 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   Extremes extremes() const override {
+    const WcsphFields<D> f = fields();
     Extremes e;
-    e.max_speed = Backend::max_of(n_, FluidMagnitude<D>{fields(), velocity_.data()}, scratch_);
-    e.max_acceleration =
-        Backend::max_of(n_, FluidMagnitude<D>{fields(), acceleration_.data()}, scratch_);
+    e.max_speed = Backend::max_of(n_, FluidMagnitude<D>{f, f.velocity}, workspace_);
+    e.max_acceleration = Backend::max_of(n_, FluidMagnitude<D>{f, f.acceleration}, workspace_);
     return e;
   }
 
   FluidEnergy energy(const Real* gravity) const override {
-    const auto share = FluidEnergyShare<D>::over(mass_.data(), position_.data(), velocity_.data(),
-                                                 kind_.data(), gravity);
+    const WcsphFields<D> f = fields();
+    const auto share = FluidEnergyShare<D>::over(f.mass, f.position, f.velocity, f.kind, gravity);
     return fluid_energy(share, [&](const FluidEnergyShare<D>& part) {
-      return Backend::sum_of(n_, part, scratch_);
+      return Backend::sum_of(n_, part, workspace_);
     });
   }
 
@@ -355,42 +322,22 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   void finish() const override { Backend::finish(); }
 
   bool any_problem() const override {
-    return Backend::max_of(n_, device_bodies::BadParticle<D>{checker()}, scratch_) > 0;
+    return Backend::max_of(n_, device_bodies::BadParticle<D>{checker()}, workspace_) > 0;
   }
 
-  void remember() override {
-    good_position_.copy_from(position_);
-    good_velocity_.copy_from(velocity_);
-    good_density_.copy_from(density_);
-    good_pressure_.copy_from(pressure_);
-    good_kind_.copy_from(kind_);
-    good_body_point_.copy_from(body_point_);
-  }
+  void remember() override { particles_.remember(shown_in_frames); }
 
-  void download_remembered(const WcsphFields<D>& host) const override {
-    good_position_.to_host(host.position, D * n_);
-    good_velocity_.to_host(host.velocity, D * n_);
-    good_density_.to_host(host.density, n_);
-    good_pressure_.to_host(host.pressure, n_);
-    good_kind_.to_host(const_cast<std::int32_t*>(host.kind), n_);
-    good_body_point_.to_host(const_cast<std::int32_t*>(host.body_point), n_);
+  void download_remembered(ParticleSet<D>& host) const override {
+    particles_.download_remembered(host);
   }
 
  private:
-  void resize_all() {
-    for (auto* a : {&position_, &velocity_, &acceleration_, &half_velocity_, &wall_velocity_})
-      a->resize(D * n_);
-    for (auto* a : {&density_, &pressure_, &mass_, &density_rate_, &half_density_}) a->resize(n_);
-    kind_.resize(n_);
-    body_point_.resize(n_);
+  // The arrays of the sort, the lists by kind, the reductions and the packed copy.
+  void resize_scratch() {
     key_.resize(n_);
     order_.resize(n_);
     flag_.resize(n_);
     kind_list_.resize(n_);
-    gather_vector_.resize(D * n_);
-    gather_scalar_.resize(n_);
-    gather_int_.resize(n_);
-    scratch_.resize(n_);
     for (auto& a : packed_position_) a.resize(n_);
     for (auto& a : packed_velocity_) a.resize(n_);
     for (auto& a : packed_viscous_velocity_) a.resize(n_);
@@ -400,24 +347,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     fluid_before_.resize(n_ + 1);
   }
 
-  WcsphFields<D> fields() const {
-    WcsphFields<D> f;
-    f.size = n_;
-    f.position = mutable_data(position_);
-    f.velocity = mutable_data(velocity_);
-    f.density = mutable_data(density_);
-    f.pressure = mutable_data(pressure_);
-    f.mass = mass_.data();
-    f.kind = kind_.data();
-    f.body_point = body_point_.data();
-    f.acceleration = mutable_data(acceleration_);
-    f.density_rate = mutable_data(density_rate_);
-    f.half_velocity = mutable_data(half_velocity_);
-    f.half_density = mutable_data(half_density_);
-    f.wall_velocity = mutable_data(wall_velocity_);
-    f.body_point_acceleration = point_acceleration_.data();
-    return f;
-  }
+  WcsphFields<D> fields() const { return wcsph_fields<D>(particles_, point_acceleration_.data()); }
   template <class T>
   static T* mutable_data(const Array<T>& a) {
     return const_cast<T*>(a.data());
@@ -434,13 +364,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   ParticleCheck<D> checker() const {
-    ParticleCheck<D> c{position_.data(),
-                       velocity_.data(),
-                       density_.data(),
-                       pressure_.data(),
-                       kind_.data(),
-                       {},
-                       {}};
+    const WcsphFields<D> f = fields();
+    ParticleCheck<D> c{f.position, f.velocity, f.density, f.pressure, f.kind, {}, {}};
     for (int a = 0; a < D; ++a) {
       c.escape_min[a] = setup_.escape_min[a];
       c.escape_max[a] = setup_.escape_max[a];
@@ -474,11 +399,11 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   // After each sort: fluid_before (fluid_before[k] = fluid particles among [0, k); its first
   // entry, 0, is written once) and the lists by kind, the fluid first, in kind_list_.
   void list_by_kind() {
-    Backend::for_each(n_, device_bodies::FluidFlag{kind_.data(), flag_.data()});
-    Backend::inclusive_scan(flag_.data(), fluid_before_.data() + 1, n_);
-    Backend::for_each(
-        n_, device_bodies::ListByKind{kind_.data(), fluid_before_.data(), kind_list_.data(),
-                                      kind_list_.data() + fluid_count_});
+    const std::int32_t* kind = fields().kind;
+    Backend::for_each(n_, device_bodies::FluidFlag{kind, flag_.data()});
+    Backend::inclusive_scan(flag_.data(), fluid_before_.data() + 1, n_, workspace_);
+    Backend::for_each(n_, device_bodies::ListByKind{kind, fluid_before_.data(), kind_list_.data(),
+                                                    kind_list_.data() + fluid_count_});
   }
   template <class Body>
   void for_each_fluid(const Body& body) const {
@@ -490,35 +415,14 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
                       device_bodies::Listed<Body>{kind_list_.data() + fluid_count_, body});
   }
 
-  // Reorders a field by the sort's order through a scratch array of the same size, which the
-  // field then swaps with (so each scratch keeps its size).
-  template <class T>
-  void gather(Array<T>& field, int width) {
-    Array<T>& scratch = scratch_for<T>(width);
-    Backend::for_each(n_,
-                      device_bodies::Gather<T>{field.data(), scratch.data(), order_.data(), width});
-    field.swap(scratch);
-  }
-  template <class T>
-  Array<T>& scratch_for(int width) {
-    if constexpr (std::is_same_v<T, Real>) {
-      return width == 1 ? gather_scalar_ : gather_vector_;
-    } else {
-      return gather_int_;
-    }
-  }
-
   WcsphDeviceSetup<D, Kernel> setup_;
+  DeviceParticleSet<D, Backend> particles_;
   std::size_t n_ = 0;
+  double bytes_per_particle_ = 0;
   int key_bits_ = 32;
-  Array<Real> position_, velocity_, density_, pressure_, mass_, acceleration_, density_rate_,
-      half_velocity_, half_density_, wall_velocity_;
-  Array<std::int32_t> kind_, body_point_;
   Array<std::uint32_t> key_, order_, flag_, cell_start_, fluid_before_, kind_list_;
   std::size_t fluid_count_ = 0;
-  Array<Real> gather_vector_, gather_scalar_;
-  Array<std::int32_t> gather_int_;
-  mutable Array<double> scratch_;
+  mutable typename Backend::Workspace workspace_;
   Array<float> packed_position_[3], packed_velocity_[3], packed_viscous_velocity_[3];
   Array<float> packed_density_, packed_pressure_, packed_pressure_term_, packed_volume_,
       packed_fluid_, packed_viscous_weight_;
@@ -529,8 +433,6 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   WallSurfacesView walls_;  // over wall_plane_ and wall_box_
   Array<Real> wall_plane_, wall_box_;
   mutable Array<Real> body_centre_, wrench_;
-  Array<Real> good_position_, good_velocity_, good_density_, good_pressure_;
-  Array<std::int32_t> good_kind_, good_body_point_;
 };
 
 }  // namespace sluice

@@ -56,13 +56,8 @@ class WcsphModel final : public ParticleFluid<D> {
   void initialize() override {
     ParticleState<D>& s = this->state();
     auto& ps = s.particles;
-    acceleration_ = ps.add_vector_field({"acceleration", "m/s^2"});
-    density_rate_ = ps.add_scalar_field({"density_rate", "kg/m^3/s"});
-    half_velocity_ = ps.add_vector_field({"half_step_velocity", "m/s"});
-    this->carry_through_put_back(half_velocity_);
-    half_density_ = ps.add_scalar_field({"half_step_density", "kg/m^3"});
-    // Walls: the velocity the viscous terms see (no-slip: mirrored about the wall's own).
-    wall_velocity_ = ps.add_vector_field({"wall_velocity", "m/s"});
+    fields_ = add_wcsph_fields(ps);
+    this->carry_through_put_back(fields_.half_velocity);
     // The builder set a hydrostatic pressure; the density follows from the equation of state.
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (ps.is_fluid(i)) ps.density[i] = eos_.density(ps.pressure[i]);
@@ -78,7 +73,7 @@ class WcsphModel final : public ParticleFluid<D> {
   void archive_state(StateArchive& a) override {
     Base::archive_state(a);
     if (device_ && a.reading()) {
-      device_->upload(fields(this->state()));
+      upload();
       host_current_ = true;
       points_placed_ = false;
     }
@@ -156,15 +151,15 @@ class WcsphModel final : public ParticleFluid<D> {
   io::FluidFrame last_good_frame() const override {
     if (!device_) return Base::last_good_frame();
     ParticleSet<D> good = this->state().particles;
-    device_->download_remembered(fields(good));
+    device_->download_remembered(good);
     return {this->frame_of(good), {}};
   }
   double last_good_time() const override { return device_ ? good_time_ : Base::last_good_time(); }
 
   // The model's own fields, for tests that check the pair loops against a reference.
-  FieldHandle<Vec<D>> acceleration_field() const { return acceleration_; }
-  FieldHandle<Real> density_rate_field() const { return density_rate_; }
-  FieldHandle<Vec<D>> wall_velocity_field() const { return wall_velocity_; }
+  FieldHandle<Vec<D>> acceleration_field() const { return fields_.acceleration; }
+  FieldHandle<Real> density_rate_field() const { return fields_.density_rate; }
+  FieldHandle<Vec<D>> wall_velocity_field() const { return fields_.wall_velocity; }
 
   TimeStep next_time_step() const override {
     const ParticleState<D>& s = this->state();
@@ -188,7 +183,7 @@ class WcsphModel final : public ParticleFluid<D> {
   void refresh_host() const override {
     if (!device_ || host_current_) return;
     auto& s = const_cast<ParticleState<D>&>(this->state());
-    device_->download(fields(s));
+    device_->download(s.particles, s.body_point_acceleration);
     // No stage after the device's sort moves a particle across a cell, so the host's sort
     // finds them in order, and reorder copies nothing.
     std::vector<std::uint32_t> order;
@@ -226,7 +221,7 @@ class WcsphModel final : public ParticleFluid<D> {
       setup.escape_max[a] = s.escape_box.max[a3];
     }
     device_ = make_wcsph_device_run<D, Kernel>(p_.device, setup);
-    device_->upload(fields(s));
+    upload();
     host_current_ = false;
     points_placed_ = false;
   }
@@ -242,29 +237,17 @@ class WcsphModel final : public ParticleFluid<D> {
     if (p_.time_device_stages) device_->finish();
   }
 
+  void upload() {
+    const ParticleState<D>& s = this->state();
+    device_->upload(s.particles, s.body_point_acceleration);
+  }
+
   // The host's particle set as the loop bodies see it.
-  WcsphFields<D> fields(const ParticleState<D>& s) const { return fields(s.particles, &s); }
-  WcsphFields<D> fields(const ParticleSet<D>& particles,
-                        const ParticleState<D>* s = nullptr) const {
+  WcsphFields<D> fields(const ParticleState<D>& s) const {
     static_assert(sizeof(Vec<D>) == D * sizeof(Real), "a vector is D reals in a row");
-    auto& ps = const_cast<ParticleSet<D>&>(particles);
-    auto reals = [](auto& v) { return v.empty() ? nullptr : v.front().data(); };
-    WcsphFields<D> f;
-    f.size = ps.size();
-    f.position = reals(ps.position);
-    f.velocity = reals(ps.velocity);
-    f.density = ps.density.data();
-    f.pressure = ps.pressure.data();
-    f.mass = ps.mass.data();
-    f.kind = reinterpret_cast<const std::int32_t*>(ps.kind.data());
-    f.body_point = ps.body_point.data();
-    f.acceleration = reals(ps[acceleration_]);
-    f.density_rate = ps[density_rate_].data();
-    f.half_velocity = reals(ps[half_velocity_]);
-    f.half_density = ps[half_density_].data();
-    f.wall_velocity = reals(ps[wall_velocity_]);
-    if (s) f.body_point_acceleration = reals(s->body_point_acceleration);
-    return f;
+    auto& ps = const_cast<ParticleSet<D>&>(s.particles);
+    const auto& a = s.body_point_acceleration;
+    return wcsph_fields<D>(ps, a.empty() ? nullptr : a.front().data());
   }
 
   // What the neighbour loops read, the packed copy as the last pack left it.
@@ -343,8 +326,7 @@ class WcsphModel final : public ParticleFluid<D> {
   WcsphParameters p_;
   Kernel kernel_;
   TaitEquation eos_;
-  FieldHandle<Vec<D>> acceleration_, half_velocity_, wall_velocity_;
-  FieldHandle<Real> density_rate_, half_density_;
+  WcsphFieldHandles<D> fields_;
   std::unique_ptr<BoundaryTreatment<WcsphBoundaryContext<D, Kernel>>> boundary_;
   PackedParticles packed_;
   Real max_speed_ = 0;
