@@ -166,6 +166,25 @@ void ParticleFluid<D>::keep_out_of_walls() {
 }
 
 template <int D>
+ParticleDeviceSetup<D> ParticleFluid<D>::device_setup() const {
+  const ParticleState<D>& s = state_;
+  ParticleDeviceSetup<D> setup{s.cells.view(), s.cells.cell_count(), body_points_.size()};
+  setup.cells.cell_start = nullptr;  // the device keeps its own
+  setup.body_first = body_points_.first_of_each_body(body_count_);
+  setup.walls = wall_surfaces_.view();
+  for (std::size_t k = 0; k < body_points_.size(); ++k) {
+    for (int a = 0; a < 3; ++a) setup.point_local.push_back(body_points_[k].local[a]);
+  }
+  for (int a = 0; a < D; ++a) {
+    const int a3 = D == 3 ? a : 2 * a;
+    setup.escape_min[a] = s.escape_box.min[a3];
+    setup.escape_max[a] = s.escape_box.max[a3];
+  }
+  if (carried_velocity_) setup.carried_velocity = s.particles.label(*carried_velocity_).name;
+  return setup;
+}
+
+template <int D>
 void ParticleFluid<D>::receive_body_motion(const std::vector<BodyKinematics>& motion) {
   auto& ps = state_.particles;
   exec::Default::for_each(ps.size(), [&](std::size_t i) {

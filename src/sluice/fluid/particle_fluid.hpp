@@ -13,6 +13,7 @@
 #include "sluice/coupling/body_geometry.hpp"
 #include "sluice/coupling/body_points.hpp"
 #include "sluice/fluid/fluid_system.hpp"
+#include "sluice/fluid/particle_device_run.hpp"
 #include "sluice/fluid/particle_state.hpp"
 #include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/io/case_config.hpp"
@@ -83,6 +84,9 @@ class ParticleFluid : public FluidSystem {
   // set by cell.
   virtual void sort_by_cell();
   io::PolyFrame frame_of(const ParticleSet<D>& particles) const;
+  // What the particle base's services need to run on a device (particle_device_run.hpp): the
+  // cells, the body points, the walls, the escape box and the carried velocity's field.
+  ParticleDeviceSetup<D> device_setup() const;
   // A model whose step goes on from a half-step velocity after the neighbour stage names it
   // here, so that a particle put back on a wall loses its speed into the wall there too.
   void carry_through_put_back(FieldHandle<Vec<D>> half_step_velocity) {

@@ -47,6 +47,7 @@ struct FieldComponents<ParticleKind> {
 template <int D>
 class ParticleSet {
  public:
+  static constexpr int kDimension = D;
   std::vector<Vec<D>> position;
   std::vector<Vec<D>> velocity;
   std::vector<Real> density;
@@ -83,6 +84,11 @@ class ParticleSet {
   template <class T>
   const std::vector<T>& operator[](FieldHandle<T> h) const {
     return const_cast<ParticleSet&>(*this).fields<T>()[h.index].values;
+  }
+
+  template <class T>
+  const FieldLabel& label(FieldHandle<T> h) const {
+    return const_cast<ParticleSet&>(*this).fields<T>()[h.index].label;
   }
 
   // visit(label, values) for every field, the engine's first, in a fixed order; `values` is a

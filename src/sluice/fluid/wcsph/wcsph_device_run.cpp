@@ -23,9 +23,11 @@ bool wcsph_device_available(WcsphDevice device, std::string& why) {
 }
 
 double wcsph_device_bytes_per_particle(int dimension) {
+  // The same on every backend; the host's names one.
   auto with_wcsph_fields = [](auto layout) {
     add_wcsph_fields(layout);
-    return wcsph_device_run_bytes_per_particle(layout);
+    return wcsph_device_run_bytes_per_particle<decltype(layout)::kDimension, exec::HostBackend>(
+        layout);
   };
   return dimension == 2 ? with_wcsph_fields(ParticleSet<2>()) : with_wcsph_fields(ParticleSet<3>());
 }

@@ -15,6 +15,7 @@
 #include "sluice/core/types.hpp"
 #include "sluice/coupling/body_motion.hpp"
 #include "sluice/fluid/fluid_energy.hpp"
+#include "sluice/fluid/particle_device_run.hpp"
 #include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
 #include "sluice/neighbor/cell_list.hpp"
@@ -83,19 +84,12 @@ class WcsphDeviceRun {
   virtual void download_remembered(ParticleSet<D>& host) const = 0;
 };
 
-// What a device run needs besides the particles: the loop bodies' constants, the cell grid
-// (its geometry; the device keeps its own cell starts) and the domain a fluid particle must not
-// leave.
+// What a device run needs besides the particles: the loop bodies' constants and what the
+// particle base's services need (particle_device_run.hpp).
 template <int D, class Kernel>
 struct WcsphDeviceSetup {
   WcsphConstants<D, Kernel> constants;
-  CellGridView<D> cells;
-  std::size_t cell_count = 0;
-  std::size_t body_point_count = 0;
-  std::vector<std::uint32_t> body_first = {};  // BodyPoints::first_of_each_body (bodies + 1)
-  std::vector<Real> point_local = {};          // each body point's place in its body (3 reals)
-  WallSurfacesView walls = {};                 // on the host; the run copies its arrays
-  Real escape_min[D] = {}, escape_max[D] = {};
+  ParticleDeviceSetup<D> base;
 };
 
 // The run on `device` (kGpu or kEmulated). Throws std::runtime_error when it cannot start.

@@ -206,20 +206,7 @@ class WcsphModel final : public ParticleFluid<D> {
   // The device's run, from the host's particles as initialize() left them.
   void start_device() {
     const ParticleState<D>& s = this->state();
-    WcsphDeviceSetup<D, Kernel> setup{constants(s), s.cells.view(), s.cells.cell_count(),
-                                      this->body_points().size()};
-    setup.cells.cell_start = nullptr;
-    const BodyPoints& points = this->body_points();
-    setup.body_first = points.first_of_each_body(this->body_count());
-    setup.walls = this->wall_surfaces().view();
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      for (int a = 0; a < 3; ++a) setup.point_local.push_back(points[k].local[a]);
-    }
-    for (int a = 0; a < D; ++a) {
-      const int a3 = D == 3 ? a : 2 * a;
-      setup.escape_min[a] = s.escape_box.min[a3];
-      setup.escape_max[a] = s.escape_box.max[a3];
-    }
+    WcsphDeviceSetup<D, Kernel> setup{constants(s), this->device_setup()};
     device_ = make_wcsph_device_run<D, Kernel>(p_.device, setup);
     upload();
     host_current_ = false;
