@@ -7,11 +7,14 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "sluice/coupling/body_geometry.hpp"
 #include "sluice/coupling/body_points.hpp"
+#include "sluice/exec/host_backend.hpp"
+#include "sluice/exec/policy.hpp"
 #include "sluice/fluid/fluid_system.hpp"
 #include "sluice/fluid/particle_device_run.hpp"
 #include "sluice/fluid/particle_state.hpp"
@@ -43,6 +46,13 @@ class ParticleFluid : public FluidSystem {
   // Called once after construction: the model's fields and what its first step needs.
   virtual void initialize() = 0;
 
+  // From here on the particles live in the emulated device's memory (exec/host_backend.hpp):
+  // the base's services run there (particle_device_run.hpp), and so do a model's loops written
+  // with for_each_particle; the host's set becomes a cache that refresh_host() fills before
+  // anything reads it. Called after initialize(). (A GPU run needs the model's loop bodies
+  // compiled for it: wcsph has its own device run.)
+  void run_on_emulated_device();
+
   // Stages: the model's first stages; then, after the bodies' advance, the engine's neighbour
   // sort and the model's other stages.
   void append_stages(StageList& before_bodies, StageList& after_bodies) override;
@@ -58,7 +68,7 @@ class ParticleFluid : public FluidSystem {
   double surge_front(int axis) const override;
   std::optional<std::string> check(const StepClock& clock) const override;
   void remember_good(double time) override;
-  io::FluidFrame last_good_frame() const override { return {frame_of(last_good_), {}}; }
+  io::FluidFrame last_good_frame() const override;
   double last_good_time() const override { return last_good_time_; }
   FluidSize size() const override;
   FluidEnergy energy() const override;  // kinetic, potential and mass of the fluid
@@ -78,8 +88,23 @@ class ParticleFluid : public FluidSystem {
                                  std::vector<Vec3>& force) const = 0;
   // A model whose particles live elsewhere (on a device) copies them into the particle set
   // here; whatever reads the particle set (output, probes, the check, checkpoints) calls it
-  // first. Nothing by default.
-  virtual void refresh_host() const {}
+  // first. The base copies the emulated device's particles back; nothing otherwise.
+  virtual void refresh_host() const;
+
+  // body(i) for every particle, wherever the particles live: make(set) builds the loop body
+  // from a set's field components (set.template components<Real>("pressure") ...), the host's
+  // ParticleSet or the emulated device's DeviceParticleSet, so that a model's loops run on
+  // either without code of their own for the device.
+  template <class Make>
+  void for_each_particle(Make&& make) {
+    if (emulated_) {
+      emulated_->for_each(make(emulated_->particles()));
+      host_current_ = false;
+    } else {
+      exec::Default::for_each(state_.particles.size(), make(state_.particles));
+    }
+  }
+
   // The neighbours stage: puts back fluid found in a wall's layers, then sorts the particle
   // set by cell.
   virtual void sort_by_cell();
@@ -110,6 +135,9 @@ class ParticleFluid : public FluidSystem {
   std::optional<FieldHandle<Vec<D>>> carried_velocity_;
   ParticleSet<D> last_good_;
   double last_good_time_ = 0;
+  // With run_on_emulated_device: the run there, and whether the host's set holds its state.
+  std::unique_ptr<ParticleDeviceRun<D, exec::HostBackend>> emulated_;
+  mutable bool host_current_ = true;
 };
 
 }  // namespace sluice

@@ -76,6 +76,8 @@ ParticleCheck<D> checker(const ParticleState<D>& s) {
 
 template <int D>
 std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const {
+  // On the emulated device the check runs there; the host's copy names the particle.
+  if (emulated_ && !emulated_->any_problem()) return std::nullopt;
   refresh_host();
   if (state_.particles.size() == 0) return std::nullopt;
   const ParticleCheck<D> problem_of = checker(state_);
@@ -95,17 +97,28 @@ std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const
 // What a frame shows, the model's fields marked for output included.
 template <int D>
 void ParticleFluid<D>::remember_good(double time) {
+  last_good_time_ = time;
+  if (emulated_) return emulated_->remember();  // kept on the device
   refresh_host();
   last_good_.assign_fields(state_.particles, shown_in_frames);
-  last_good_time_ = time;
+}
+
+template <int D>
+io::FluidFrame ParticleFluid<D>::last_good_frame() const {
+  if (!emulated_) return {frame_of(last_good_), {}};
+  ParticleSet<D> good = state_.particles;
+  emulated_->download_remembered(good);
+  return {frame_of(good), {}};
 }
 
 // The class is instantiated in particle_fluid.cpp; these are its members defined here.
 template io::PolyFrame ParticleFluid<2>::frame_of(const ParticleSet<2>&) const;
 template std::optional<std::string> ParticleFluid<2>::check(const StepClock&) const;
 template void ParticleFluid<2>::remember_good(double);
+template io::FluidFrame ParticleFluid<2>::last_good_frame() const;
 template io::PolyFrame ParticleFluid<3>::frame_of(const ParticleSet<3>&) const;
 template std::optional<std::string> ParticleFluid<3>::check(const StepClock&) const;
 template void ParticleFluid<3>::remember_good(double);
+template io::FluidFrame ParticleFluid<3>::last_good_frame() const;
 
 }  // namespace sluice

@@ -24,7 +24,7 @@ class StillWater final : public ParticleFluid<D> {
         rho_g_(config.fluid.density * config.gravity.norm()) {}
 
   void initialize() override {
-    depth_ = this->state().particles.add_scalar_field({"depth", "m", true});
+    this->state().particles.add_scalar_field({"depth", "m", true});
     measure_depth();
   }
   std::string describe() const override {
@@ -44,17 +44,25 @@ class StillWater final : public ParticleFluid<D> {
   void archive_model(StateArchive&) override {}
 
  private:
-  // p = rho g depth, so depth = p / (rho g).
+  // p = rho g depth, so depth = p / (rho g): a loop body over plain arrays, which the base runs
+  // wherever the particles live (the host, or the emulated device).
+  struct DepthOfParticle {
+    const Real* pressure;
+    const std::int32_t* kind;  // ParticleKind's integer: 0 is fluid
+    Real* depth;
+    Real rho_g;
+    void operator()(std::size_t i) const { depth[i] = kind[i] == 0 ? pressure[i] / rho_g : 0; }
+  };
   void measure_depth() {
-    auto& ps = this->state().particles;
-    auto& depth = ps[depth_];
-    for (std::size_t i = 0; i < ps.size(); ++i)
-      depth[i] = ps.is_fluid(i) ? ps.pressure[i] / rho_g_ : 0;
+    this->for_each_particle([&](auto& set) {
+      return DepthOfParticle{set.template components<Real>("pressure"),
+                             set.template components<std::int32_t>("kind"),
+                             set.template components<Real>("depth"), rho_g_};
+    });
   }
 
   double time_step_;
-  double rho_g_;
-  FieldHandle<Real> depth_;
+  Real rho_g_;
 };
 
 // The factory a registry holds: reads and checks the model's parameters, builds it ready to
@@ -65,9 +73,11 @@ std::unique_ptr<FluidSystem> make_still_water(const io::CaseConfig& config,
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.required<std::string>("name");
   const double time_step = model.required_positive("time_step");
+  const std::string device = model.optional_choice("device", "cpu", "device", {"cpu", "emulated"});
   model.finish();  // unknown keys are errors
   auto fluid = std::make_unique<StillWater<D>>(config, bodies, time_step);
   fluid->initialize();
+  if (device == "emulated") fluid->run_on_emulated_device();  // the base's, for any model
   return fluid;
 }
 

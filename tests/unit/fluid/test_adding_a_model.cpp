@@ -104,5 +104,82 @@ TEST(AddingAModel, TheEngineStepsItWithABody) {
   EXPECT_NEAR(measured[1], 0.2, 0.02);
 }
 
+// The base runs the model's loops and its own services (sort, body points, check, last good
+// state, energy) on the emulated device, the model having no device code: the same bits as on
+// the host, its own field included.
+TEST(AddingAModel, RunsOnTheEmulatedDeviceWithoutCodeOfItsOwnForIt) {
+  struct End {
+    io::PolyFrame frame, last_good;
+    std::vector<Vec<2>> position;  // in double, as the set holds them
+    std::vector<Real> depth;
+    Vec3 body;
+    FluidEnergy energy;
+  };
+  auto run = [](const std::string& device) {
+    Simulation<2> sim(
+        still_tank("  name: still_water\n  time_step: 0.01\n  device: " + device + "\n"),
+        with_still_water());
+    while (sim.time() < 0.2 - 1e-12) {
+      sim.step(0.2);
+      sim.fluid().remember_good(sim.time());
+    }
+    EXPECT_EQ(sim.fluid().check(sim.clock()), std::nullopt);
+    End end{sim.fluid().frame().points,
+            sim.fluid().last_good_frame().points,
+            {},
+            {},
+            sim.bodies().state(0).position,
+            sim.fluid().energy()};
+    const auto& ps = sim.state().particles;  // the device's copy came back for the frame
+    end.position = ps.position;
+    end.depth.assign(ps.components<Real>("depth"), ps.components<Real>("depth") + ps.size());
+    return end;
+  };
+  const End host = run("cpu"), device = run("emulated");
+  for (io::PolyFrame End::*frames : {&End::frame, &End::last_good}) {
+    const io::PolyFrame& a = host.*frames;
+    const io::PolyFrame& b = device.*frames;
+    EXPECT_EQ(a.points, b.points);
+    ASSERT_EQ(a.float_arrays.size(), b.float_arrays.size());
+    for (std::size_t k = 0; k < a.float_arrays.size(); ++k) {
+      EXPECT_EQ(a.float_arrays[k].name, b.float_arrays[k].name);
+      EXPECT_EQ(a.float_arrays[k].values, b.float_arrays[k].values) << a.float_arrays[k].name;
+    }
+    ASSERT_EQ(a.int_arrays.size(), b.int_arrays.size());
+    for (std::size_t k = 0; k < a.int_arrays.size(); ++k) {
+      EXPECT_EQ(a.int_arrays[k].values, b.int_arrays[k].values) << a.int_arrays[k].name;
+    }
+  }
+  EXPECT_EQ(host.position, device.position);
+  EXPECT_EQ(host.depth, device.depth);
+  EXPECT_EQ(host.body, device.body);
+  EXPECT_EQ(host.energy.kinetic, device.energy.kinetic);
+  EXPECT_EQ(host.energy.potential, device.energy.potential);
+  EXPECT_EQ(host.energy.mass, device.energy.mass);
+}
+
+// On the emulated device the host's set is a cache: what a frame shows comes from the device.
+// (In a tank without bodies nothing reads the host's set between frames.)
+TEST(AddingAModel, OnTheEmulatedDeviceTheHostsSetIsACache) {
+  const std::string tank =
+      "dimension: 2\nspacing: 0.02\ndomain: {min: [0, 0], max: [0.4, 0.6]}\nend_time: 0.2\n"
+      "output_interval: 0.1\nfluid:\n  blocks:\n    - {min: [0, 0], max: [0.4, 0.2]}\n"
+      "walls:\n  - {type: tank, min: [0, 0], max: [0.4, 0.6], open: [z+]}\n"
+      "model: {name: still_water, time_step: 0.01, device: ";
+  for (const std::string device : {"cpu", "emulated"}) {
+    Simulation<2> sim(io::parse_case(tank + device + "}\n", "still.yaml"), with_still_water());
+    sim.step(0.2);
+    auto& cache = const_cast<ParticleSet<2>&>(sim.state().particles);
+    std::fill_n(cache.components<Real>("depth"), cache.size(), -1.0);
+    const io::PolyFrame frame = sim.fluid().frame().points;
+    const auto depth = std::find_if(frame.float_arrays.begin(), frame.float_arrays.end(),
+                                    [](const io::PointArrayF32& a) { return a.name == "depth"; });
+    ASSERT_NE(depth, frame.float_arrays.end());
+    EXPECT_EQ(*std::max_element(depth->values.begin(), depth->values.end()) > 0,
+              device == "emulated")
+        << device;
+  }
+}
+
 }  // namespace
 }  // namespace sluice
