@@ -26,6 +26,7 @@
 #include "sluice/coupling/rigid_point.hpp"
 #include "sluice/fluid/fluid_energy.hpp"
 #include "sluice/fluid/particle_check.hpp"
+#include "sluice/fluid/particle_device.hpp"
 #include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 #include "sluice/particles/device_particle_set.hpp"
@@ -422,6 +423,38 @@ class ParticleDeviceRun {
   WallSurfacesView walls_;  // over wall_plane_ and wall_box_
   Array<Real> wall_plane_, wall_box_;
   mutable Array<Real> body_centre_, wrench_;
+};
+
+// The base's services as the device ParticleFluid runs on (particle_device.hpp), over a
+// backend; run() gives the model's loops (ParticleFluid::for_each_particle) the particles there.
+template <int D, class Backend>
+class ParticleDeviceOn final : public ParticleDevice<D> {
+ public:
+  explicit ParticleDeviceOn(const ParticleDeviceSetup<D>& setup) : run_(setup) {}
+  ParticleDeviceRun<D, Backend>& run() { return run_; }
+
+  std::string name() const override { return Backend::name(); }
+  double bytes_per_particle() const override { return bytes_per_particle_; }
+  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) override {
+    run_.upload(host, point_acceleration);
+    bytes_per_particle_ = ParticleDeviceRun<D, Backend>::bytes_per_particle(host);
+  }
+  void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
+    run_.download(host, point_acceleration);
+  }
+  void sort_by_cell() override { run_.sort_by_cell(); }
+  void set_body_motion(const std::vector<Real>& body_motion) override {
+    run_.set_body_motion(body_motion);
+  }
+  FluidEnergy energy(const Real* gravity) const override { return run_.energy(gravity); }
+  bool any_problem() const override { return run_.any_problem(); }
+  void remember() override { run_.remember(); }
+  void download_remembered(ParticleSet<D>& host) const override { run_.download_remembered(host); }
+  void finish() const override { run_.finish(); }
+
+ private:
+  ParticleDeviceRun<D, Backend> run_;
+  double bytes_per_particle_ = 0;
 };
 
 }  // namespace sluice

@@ -147,17 +147,25 @@ void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_
 }
 
 template <int D>
-void ParticleFluid<D>::run_on_emulated_device() {
-  emulated_ = std::make_unique<ParticleDeviceRun<D, exec::HostBackend>>(device_setup());
-  emulated_->upload(state_.particles, state_.body_point_acceleration);
+void ParticleFluid<D>::run_on_device(std::unique_ptr<ParticleDevice<D>> device) {
+  device_ = std::move(device);
+  device_->upload(state_.particles, state_.body_point_acceleration);
   host_current_ = false;
 }
 
 template <int D>
+void ParticleFluid<D>::run_on_emulated_device() {
+  auto device = std::make_unique<ParticleDeviceOn<D, exec::HostBackend>>(device_setup());
+  ParticleDeviceRun<D, exec::HostBackend>* loops = &device->run();
+  run_on_device(std::move(device));
+  emulated_loops_ = loops;
+}
+
+template <int D>
 void ParticleFluid<D>::refresh_host() const {
-  if (!emulated_ || host_current_) return;
+  if (!device_ || host_current_) return;
   auto& s = const_cast<ParticleState<D>&>(state_);
-  emulated_->download(s.particles, s.body_point_acceleration);
+  device_->download(s.particles, s.body_point_acceleration);
   // No stage after the device's sort moves a particle across a cell, so the host's sort finds
   // them in order (its cell starts are what the probes read), and reorder copies nothing.
   std::vector<std::uint32_t> order;
@@ -168,11 +176,7 @@ void ParticleFluid<D>::refresh_host() const {
 
 template <int D>
 void ParticleFluid<D>::sort_by_cell() {
-  if (emulated_) {
-    emulated_->sort_by_cell();
-    host_current_ = false;
-    return;
-  }
+  if (device_) return on_device([&] { device_->sort_by_cell(); });
   keep_out_of_walls();
   state_.cells.sort(state_.particles.position, order_);
   state_.particles.reorder(order_);
@@ -211,11 +215,7 @@ ParticleDeviceSetup<D> ParticleFluid<D>::device_setup() const {
 
 template <int D>
 void ParticleFluid<D>::receive_body_motion(const std::vector<BodyKinematics>& motion) {
-  if (emulated_) {
-    emulated_->set_body_motion(pack_body_motion(motion));
-    host_current_ = false;
-    return;
-  }
+  if (device_) return on_device([&] { device_->set_body_motion(pack_body_motion(motion)); });
   auto& ps = state_.particles;
   exec::Default::for_each(ps.size(), [&](std::size_t i) {
     const std::int32_t k = ps.body_point[i];
@@ -247,7 +247,7 @@ FluidSize ParticleFluid<D>::size() const {
 
 template <int D>
 FluidEnergy ParticleFluid<D>::energy() const {
-  if (emulated_) return emulated_->energy(state_.gravity.data());
+  if (device_) return device_->energy(state_.gravity.data());
   refresh_host();
   const auto& ps = state_.particles;
   return fluid_energy(energy_share(ps, state_.gravity), [&](const FluidEnergyShare<D>& share) {
@@ -266,8 +266,8 @@ void ParticleFluid<D>::archive_state(StateArchive& a) {
   state_.cells.archive_state(a);
   a.section("model");
   archive_model(a);
-  if (emulated_ && a.reading()) {
-    emulated_->upload(state_.particles, state_.body_point_acceleration);
+  if (device_ && a.reading()) {
+    device_->upload(state_.particles, state_.body_point_acceleration);
     host_current_ = true;
   }
 }

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "sluice/coupling/body_geometry.hpp"
@@ -95,14 +97,31 @@ class ParticleFluid : public FluidSystem {
   // from a set's field components (set.template components<Real>("pressure") ...), the host's
   // ParticleSet or the emulated device's DeviceParticleSet, so that a model's loops run on
   // either without code of their own for the device.
+  // (On a device other than the emulated one a model runs its own device run's stages.)
   template <class Make>
   void for_each_particle(Make&& make) {
-    if (emulated_) {
-      emulated_->for_each(make(emulated_->particles()));
+    if (emulated_loops_) {
+      emulated_loops_->for_each(make(emulated_loops_->particles()));
       host_current_ = false;
     } else {
+      if (device_)
+        throw std::logic_error("for_each_particle: this model has no loops for " + device_->name());
       exec::Default::for_each(state_.particles.size(), make(state_.particles));
     }
+  }
+
+  // From here on the particles live on `device`, uploaded from the host's set: the base's
+  // services run there, and the host's set is a cache. A model with stages of its own on the
+  // device keeps a pointer to it and runs them with on_device.
+  void run_on_device(std::unique_ptr<ParticleDevice<D>> device);
+  const ParticleDevice<D>* device() const { return device_.get(); }
+  // Runs `work` on the device: the host's set is stale after it; with the device's time_stages,
+  // waits for the work to finish (so that the stage's time is its own).
+  template <class Work>
+  void on_device(Work&& work) const {
+    work();
+    if (device_->time_stages) device_->finish();
+    host_current_ = false;
   }
 
   // The neighbours stage: puts back fluid found in a wall's layers, then sorts the particle
@@ -135,8 +154,10 @@ class ParticleFluid : public FluidSystem {
   std::optional<FieldHandle<Vec<D>>> carried_velocity_;
   ParticleSet<D> last_good_;
   double last_good_time_ = 0;
-  // With run_on_emulated_device: the run there, and whether the host's set holds its state.
-  std::unique_ptr<ParticleDeviceRun<D, exec::HostBackend>> emulated_;
+  // With run_on_device: the device, and whether the host's set holds its state; with
+  // run_on_emulated_device, the base's run there, which runs the model's loops too.
+  std::unique_ptr<ParticleDevice<D>> device_;
+  ParticleDeviceRun<D, exec::HostBackend>* emulated_loops_ = nullptr;
   mutable bool host_current_ = true;
 };
 

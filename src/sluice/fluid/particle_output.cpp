@@ -76,8 +76,8 @@ ParticleCheck<D> checker(const ParticleState<D>& s) {
 
 template <int D>
 std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const {
-  // On the emulated device the check runs there; the host's copy names the particle.
-  if (emulated_ && !emulated_->any_problem()) return std::nullopt;
+  // On a device the check runs there; the host's copy names the particle.
+  if (device_ && !device_->any_problem()) return std::nullopt;
   refresh_host();
   if (state_.particles.size() == 0) return std::nullopt;
   const ParticleCheck<D> problem_of = checker(state_);
@@ -98,16 +98,20 @@ std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const
 template <int D>
 void ParticleFluid<D>::remember_good(double time) {
   last_good_time_ = time;
-  if (emulated_) return emulated_->remember();  // kept on the device
+  if (device_) {  // kept on the device
+    device_->remember();
+    if (device_->time_stages) device_->finish();
+    return;
+  }
   refresh_host();
   last_good_.assign_fields(state_.particles, shown_in_frames);
 }
 
 template <int D>
 io::FluidFrame ParticleFluid<D>::last_good_frame() const {
-  if (!emulated_) return {frame_of(last_good_), {}};
+  if (!device_) return {frame_of(last_good_), {}};
   ParticleSet<D> good = state_.particles;
-  emulated_->download_remembered(good);
+  device_->download_remembered(good);
   return {frame_of(good), {}};
 }
 

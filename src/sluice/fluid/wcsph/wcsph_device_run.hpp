@@ -15,6 +15,7 @@
 #include "sluice/core/types.hpp"
 #include "sluice/coupling/body_motion.hpp"
 #include "sluice/fluid/fluid_energy.hpp"
+#include "sluice/fluid/particle_device.hpp"
 #include "sluice/fluid/particle_device_run.hpp"
 #include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
@@ -33,55 +34,26 @@ bool wcsph_device_available(WcsphDevice device, std::string& why);
 // kind, the packed copy.
 double wcsph_device_bytes_per_particle(int dimension);
 
+// The particle base's device (particle_device.hpp: transfers, neighbour stage, body points,
+// check, last good state, energy) with wcsph's stages on it.
 template <int D>
-class WcsphDeviceRun {
+class WcsphDeviceRun : public ParticleDevice<D> {
  public:
   struct Extremes {
     Real max_speed = 0, max_acceleration = 0;  // over the fluid particles
   };
 
-  virtual ~WcsphDeviceRun() = default;
-  // What runs it, for the run's header: the GPU's name, or "emulated".
-  virtual std::string name() const = 0;
-  // Bytes of device memory per particle (its fields, the sort's scratch, the last good state).
-  virtual double bytes_per_particle() const = 0;
-
-  // Copies every field of `host` (the engine's and wcsph's, whatever their count: the device's
-  // set mirrors the host's labels) and the body points' accelerations to the device, or back.
-  // The device's order is the host's after an upload; after a download the host holds the
-  // device's order, which is sorted by cell as of the step's neighbour sort.
-  virtual void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) = 0;
-  virtual void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const = 0;
-
-  // The stages of a step, in the model's order.
+  // The stages of a step, in the model's order (the base's neighbour stage between the first
+  // and the others).
   virtual void kick_drift(Real dt) = 0;
-  // Puts back fluid found in a wall's layers (wall_surfaces.hpp), then sorts by cell.
-  virtual void sort_by_cell() = 0;
-  // The bodies moved: `body_motion` holds each body's kinematics (pack_body_motion); the device
-  // places their points (rigid_point.hpp, the host's arithmetic) and their particles.
-  virtual void set_body_motion(const std::vector<Real>& body_motion) = 0;
   virtual void update_walls() = 0;
   virtual void compute_rates() = 0;
   virtual void kick(Real dt) = 0;
   virtual Extremes extremes() const = 0;
-  // The fluid's kinetic and potential energy and mass (fluid_energy.hpp), summed on the device
-  // (energy.csv's rows cost no transfer of the particles). `gravity` holds D reals.
-  virtual FluidEnergy energy(const Real* gravity) const = 0;
   // The fluid's force on each body and its moment about the body's `centre` (one per body),
   // from the last rates: summed over the body's points on the device (point_wrench.hpp, the
   // host's arithmetic), so that one transfer of 6 reals per body comes back.
   virtual void body_loads(const std::vector<Vec3>& centre, std::vector<Wrench>& out) const = 0;
-
-  // Returns once the device has done all the work asked of it so far, for timing each stage
-  // on its own (a GPU runs the loops while the host goes on).
-  virtual void finish() const = 0;
-
-  // Whether a particle went wrong (particle_check.hpp); the host's copy then names it.
-  virtual bool any_problem() const = 0;
-  // Keeps the present state of the fields a frame shows as the last good one (on the device),
-  // and copies it back into a set of the host's fields.
-  virtual void remember() = 0;
-  virtual void download_remembered(ParticleSet<D>& host) const = 0;
 };
 
 // What a device run needs besides the particles: the loop bodies' constants and what the

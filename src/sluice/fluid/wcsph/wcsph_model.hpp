@@ -71,30 +71,26 @@ class WcsphModel final : public ParticleFluid<D> {
   void archive_model(StateArchive& a) override { a(max_speed_, max_acceleration_); }
 
   void archive_state(StateArchive& a) override {
-    Base::archive_state(a);
-    if (device_ && a.reading()) {
-      upload();
-      host_current_ = true;
-      points_placed_ = false;
-    }
+    Base::archive_state(a);  // on a device, uploads what it read
+    if (a.reading()) points_placed_ = false;
   }
 
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(make_stage<const StepClock>("kick_drift", [this](const StepClock& c) {
-      if (device_) return on_device([&] { device_->kick_drift(c.dt); });
+      if (device_) return this->on_device([&] { device_->kick_drift(c.dt); });
       kick_drift(this->state(), c.dt);
     }));
     after.push_back(make_stage<const StepClock>("wall_state", [this](const StepClock&) {
-      if (device_) return on_device([&] { device_->update_walls(); });
+      if (device_) return this->on_device([&] { device_->update_walls(); });
       update_walls(this->state());
     }));
     after.push_back(make_stage<const StepClock>("forces", [this](const StepClock&) {
-      if (device_) return on_device([&] { device_->compute_rates(); });
+      if (device_) return this->on_device([&] { device_->compute_rates(); });
       compute_rates(this->state());
     }));
     after.push_back(make_stage<const StepClock>("kick", [this](const StepClock& c) {
       if (device_) {
-        return on_device([&] {
+        return this->on_device([&] {
           device_->kick(c.dt);
           const auto e = device_->extremes();
           max_speed_ = e.max_speed;
@@ -106,12 +102,10 @@ class WcsphModel final : public ParticleFluid<D> {
     }));
   }
 
-  // On a device, the bodies' kinematics alone go there (19 reals a body), and the device places
-  // their points and particles: a pass over the host's particles, whose copy is stale anyway,
-  // would cost a run of many millions of particles more than its step.
+  // On a device the base sends the bodies' kinematics alone (19 reals a body), and the device
+  // places their points and particles.
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override {
-    if (!device_) return Base::receive_body_motion(motion);
-    on_device([&] { device_->set_body_motion(pack_body_motion(motion)); });
+    Base::receive_body_motion(motion);
     points_placed_ = true;
   }
 
@@ -120,8 +114,7 @@ class WcsphModel final : public ParticleFluid<D> {
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
     if (!device_) return Base::body_loads(motion);
     if (!points_placed_) {  // the loads before the first exchange: placed where the host's are
-      device_->set_body_motion(pack_body_motion(motion));
-      host_current_ = false;
+      this->on_device([&] { device_->set_body_motion(pack_body_motion(motion)); });
       points_placed_ = true;
     }
     std::vector<Vec3> centre(motion.size());
@@ -130,31 +123,6 @@ class WcsphModel final : public ParticleFluid<D> {
     device_->body_loads(centre, out);
     return out;
   }
-
-  FluidEnergy energy() const override {
-    if (!device_) return Base::energy();
-    return device_->energy(this->state().gravity.data());
-  }
-
-  std::optional<std::string> check(const StepClock& clock) const override {
-    // The device finds whether a particle went wrong; the host's copy names it.
-    if (device_ && !device_->any_problem()) return std::nullopt;
-    return Base::check(clock);
-  }
-
-  void remember_good(double time) override {
-    if (!device_) return Base::remember_good(time);
-    device_->remember();
-    finish_stage_on_device();
-    good_time_ = time;
-  }
-  io::FluidFrame last_good_frame() const override {
-    if (!device_) return Base::last_good_frame();
-    ParticleSet<D> good = this->state().particles;
-    device_->download_remembered(good);
-    return {this->frame_of(good), {}};
-  }
-  double last_good_time() const override { return device_ ? good_time_ : Base::last_good_time(); }
 
   // The model's own fields, for tests that check the pair loops against a reference.
   FieldHandle<Vec<D>> acceleration_field() const { return fields_.acceleration; }
@@ -174,24 +142,6 @@ class WcsphModel final : public ParticleFluid<D> {
   }
 
  protected:
-  void sort_by_cell() override {
-    if (device_) return on_device([&] { device_->sort_by_cell(); });
-    Base::sort_by_cell();
-  }
-
-  // The device's particles into the host's set, sorted by cell as the device left them.
-  void refresh_host() const override {
-    if (!device_ || host_current_) return;
-    auto& s = const_cast<ParticleState<D>&>(this->state());
-    device_->download(s.particles, s.body_point_acceleration);
-    // No stage after the device's sort moves a particle across a cell, so the host's sort
-    // finds them in order, and reorder copies nothing.
-    std::vector<std::uint32_t> order;
-    s.cells.sort(s.particles.position, order);
-    s.particles.reorder(order);
-    host_current_ = true;
-  }
-
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
   // neighbours i, from the very pair term that gives the fluid's acceleration (in double).
   void body_point_forces(const std::vector<BodyKinematics>&,
@@ -203,30 +153,16 @@ class WcsphModel final : public ParticleFluid<D> {
   }
 
  private:
-  // The device's run, from the host's particles as initialize() left them.
+  // The device's run, from the host's particles as initialize() left them; the base owns it
+  // and runs its own services there, the model its stages.
   void start_device() {
     const ParticleState<D>& s = this->state();
     WcsphDeviceSetup<D, Kernel> setup{constants(s), this->device_setup()};
-    device_ = make_wcsph_device_run<D, Kernel>(p_.device, setup);
-    upload();
-    host_current_ = false;
+    std::unique_ptr<WcsphDeviceRun<D>> run = make_wcsph_device_run<D, Kernel>(p_.device, setup);
+    run->time_stages = p_.time_device_stages;
+    device_ = run.get();
+    this->run_on_device(std::move(run));
     points_placed_ = false;
-  }
-  template <class Work>
-  void on_device(Work&& work) {
-    work();
-    finish_stage_on_device();
-    host_current_ = false;
-  }
-  // With model.time_device_stages, a stage's time is its own work's: the device's loops run
-  // while the host goes on, so otherwise the next wait (a copy back) counts them.
-  void finish_stage_on_device() const {
-    if (p_.time_device_stages) device_->finish();
-  }
-
-  void upload() {
-    const ParticleState<D>& s = this->state();
-    device_->upload(s.particles, s.body_point_acceleration);
   }
 
   // The host's particle set as the loop bodies see it.
@@ -318,12 +254,10 @@ class WcsphModel final : public ParticleFluid<D> {
   PackedParticles packed_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
-  // With model.device: the run there, whether the host's set holds its latest state, and the
-  // time of the last good state it keeps.
-  std::unique_ptr<WcsphDeviceRun<D>> device_;
-  mutable bool host_current_ = true;
-  mutable bool points_placed_ = false;  // whether the device knows where the body points stand
-  double good_time_ = 0;
+  // With model.device: the run there (the base owns it), and whether the device knows where
+  // the body points stand.
+  WcsphDeviceRun<D>* device_ = nullptr;
+  mutable bool points_placed_ = false;
 };
 
 }  // namespace sluice
