@@ -22,6 +22,7 @@
 #include "sluice/ccp/contact_rows.hpp"
 #include "sluice/ccp/row_group.hpp"
 #include "sluice/ccp/sphere_contacts.hpp"
+#include "sluice/contact/point_grid.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/granular/granular_parameters.hpp"
 #include "sluice/fluid/granular/sphere_walls.hpp"
@@ -290,11 +291,19 @@ class GranularModel final : public ParticleFluid<D> {
     }
     const std::vector<BodyKinematics> motion = bodies_->motion();
     const Real reach = p_.radius * (1 + p_.envelope);
+    // The spheres in cells (contact/'s point grid): a body meets those in the cells its box
+    // covers, not every sphere of the pool.
+    sphere_centre_.resize(sphere_particle_.size());
+    for (std::size_t s = 0; s < sphere_particle_.size(); ++s)
+      sphere_centre_[s] = to_3d<D>(ps.position[sphere_particle_[s]]);
+    sphere_grid_.build(sphere_centre_, nullptr, 4 * p_.radius);
     for (std::size_t b = 0; b < bodies; ++b) {
       // The way the body can travel towards a sphere in the step, on top of the envelope.
       const Real margin = reach + config_.spacing + 2 * motion[b].velocity.norm() * h;
       const Real mu = std::min(p_.friction, config_.bodies[b].material.friction);
-      for (std::size_t s = 0; s < sphere_particle_.size(); ++s) {
+      if (boxes[b].min[0] > boxes[b].max[0]) continue;  // no particle: no sphere within its box
+      spheres_near(boxes[b], margin);
+      for (const std::uint32_t s : near_) {
         const std::uint32_t i = sphere_particle_[s];
         const Vec3 x = to_3d<D>(ps.position[i]);
         if (!boxes[b].contains_within(x, margin)) continue;
@@ -306,6 +315,20 @@ class GranularModel final : public ParticleFluid<D> {
       }
     }
     body_contact_total_ += body_row_keys_.size();
+  }
+
+  // The spheres (their indices among the spheres, increasing, as a scan of all would find
+  // them) in the grid's cells that `box` grown by `margin` covers; all of them where the box
+  // covers more cells than there are spheres.
+  void spheres_near(const AxisBox& box, Real margin) {
+    near_.clear();
+    const Vec3 lo = box.min.array() - margin, hi = box.max.array() + margin;
+    if (sphere_grid_.cells_in(lo, hi) > double(sphere_particle_.size())) {
+      for (std::uint32_t s = 0; s < sphere_particle_.size(); ++s) near_.push_back(s);
+      return;
+    }
+    sphere_grid_.for_each_in_cells(lo, hi, [&](std::uint32_t s) { near_.push_back(s); });
+    std::sort(near_.begin(), near_.end());
   }
 
   void add_body_contact(std::size_t b, std::size_t s, const SurfacePoint& p, Real mu, Real h) {
@@ -374,6 +397,9 @@ class GranularModel final : public ParticleFluid<D> {
   std::vector<std::uint32_t> sphere_particle_;  // sphere -> particle, this step
   std::vector<std::int32_t> sphere_of_;         // particle -> sphere (-1: not a sphere)
   SphereContacts sphere_contacts_;
+  std::vector<Vec3> sphere_centre_;  // scratch of find_body_contacts
+  PointGrid sphere_grid_;
+  std::vector<std::uint32_t> near_;
   std::vector<std::vector<SphereContacts::Contact>> block_contacts_;
   RowGroup body_rows_;
   std::vector<std::uint64_t> body_row_keys_;
