@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "particle_state_of.hpp"
 #include "physics_support.hpp"
 #include "reported_figure.hpp"
 
@@ -21,12 +22,12 @@ using testing::run_until;
 // Total energy: fluid kinetic and potential, bodies' kinetic and potential, contact springs.
 template <int D>
 double total_energy(const Simulation<D>& sim) {
-  const auto& ps = sim.state().particles;
+  const auto& ps = testing::particle_state(sim).particles;
   double e = sim.bodies().system().energy().total();
   for (std::size_t i = 0; i < ps.size(); ++i) {
     if (!ps.is_fluid(i)) continue;
-    e +=
-        ps.mass[i] * (0.5 * ps.velocity[i].squaredNorm() - sim.state().gravity.dot(ps.position[i]));
+    e += ps.mass[i] * (0.5 * ps.velocity[i].squaredNorm() -
+                       testing::particle_state(sim).gravity.dot(ps.position[i]));
   }
   return e;
 }

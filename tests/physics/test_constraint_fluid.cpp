@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "particle_state_of.hpp"
 #include "physics_support.hpp"
 #include "reported_figure.hpp"
 #include "sluice/fluid/constraint/constraint_model.hpp"
@@ -58,7 +59,7 @@ double still_depth(const io::CaseConfig& config) {
   long samples = 0;
   run_until(sim, 2.0, [&](const StepClock& c) {
     if (c.time <= 1.5) return;
-    sum += mean_surface_height(sim.state().particles, config.spacing);
+    sum += mean_surface_height(testing::particle_state(sim).particles, config.spacing);
     ++samples;
   });
   return sum / double(samples);
@@ -101,22 +102,22 @@ TEST(ConstraintFluid, HydrostaticBottomPressure) {
   const io::CaseConfig config = load_case("hydrostatic_2d.yaml", {"model.name=constraint"});
   Simulation<2> sim(config);
   const double g = 9.81, rho0 = config.fluid.density, depth = 1.0, expected = rho0 * g * depth;
-  const std::size_t fluid = sim.state().fluid_count;
+  const std::size_t fluid = testing::particle_state(sim).fluid_count;
   double sum = 0, fastest = 0, surface = 0;
   long samples = 0;
   run_until(sim, 2.0, [&](const StepClock& c) {
     if (c.time <= 1.5) return;
     for (int k = 1; k <= 9; ++k) sum += sim.fluid().pressure_at(Vec3(0.1 * k, 0, 0)) / 9;
-    surface += mean_surface_height(sim.state().particles, config.spacing);
+    surface += mean_surface_height(testing::particle_state(sim).particles, config.spacing);
     ++samples;
-    const auto& ps = sim.state().particles;
+    const auto& ps = testing::particle_state(sim).particles;
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (ps.is_fluid(i)) fastest = std::max(fastest, ps.velocity[i].norm());
     }
   });
   ASSERT_GT(samples, 10);
   const double mean = sum / double(samples);
-  const auto [fluid_now, outside] = fluid_and_outside(sim.state().particles, 1.0);
+  const auto [fluid_now, outside] = fluid_and_outside(testing::particle_state(sim).particles, 1.0);
   std::printf(
       "F1 (constraint): bottom pressure over 1.5-2 s %.5g Pa (rho g H %.5g, %+.2f %%) over %ld "
       "steps; largest speed over 1.5-2 s %.4f m/s (%.4f sqrt(gH)); largest density error %.4f %%\n",
@@ -149,7 +150,7 @@ TEST(ConstraintFluid, DensityErrorAtFiveTimesTheWcsphStep) {
   Simulation<2> wcsph(load_case("dam_break_2d.yaml", {"spacing=0.05"}));
   const double wcsph_step = mean_step(wcsph);
   Simulation<2> sim(load_case("dam_break_2d.yaml", {"model.name=constraint", "spacing=0.05"}));
-  const std::size_t fluid = sim.state().fluid_count;
+  const std::size_t fluid = testing::particle_state(sim).fluid_count;
   const double step = mean_step(sim);
   const double error = constraint_model(sim).largest_density_error();
   std::printf(
@@ -160,7 +161,7 @@ TEST(ConstraintFluid, DensityErrorAtFiveTimesTheWcsphStep) {
                          testing::Bound::above, 5);
   testing::expect_figure({"F2 `constraint` largest density error", "%", 3}, 100 * error,
                          testing::Bound::below, 1);
-  EXPECT_EQ(fluid_and_outside(sim.state().particles, 4.0).first, fluid);
+  EXPECT_EQ(fluid_and_outside(testing::particle_state(sim).particles, 4.0).first, fluid);
 }
 
 // Same answer on one and two threads, bit for bit: every row is built and every particle's
@@ -169,7 +170,7 @@ TEST(ConstraintFluid, SameOnOneAndTwoThreads) {
   const auto [one, two] = testing::on_one_and_two_threads([] {
     Simulation<2> sim(load_case("dam_break_2d.yaml", {"model.name=constraint", "spacing=0.05"}));
     run_until(sim, 0.2, [](const StepClock&) {});
-    return sim.state().particles;
+    return testing::particle_state(sim).particles;
   });
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) {

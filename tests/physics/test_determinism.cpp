@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "particle_state_of.hpp"
 #include "physics_support.hpp"
 
 namespace sluice {
@@ -15,7 +16,7 @@ ParticleSet<2> run_with_threads(int threads) {
   omp_set_num_threads(threads);
   Simulation<2> sim(testing::load_case("dam_break_2d.yaml", {"spacing=0.05"}));
   testing::run_until(sim, 0.05, [](const StepClock&) {});
-  return sim.state().particles;
+  return testing::particle_state(sim).particles;
 }
 
 TEST(Determinism, DamBreakSameOnOneAndTwoThreads) {
@@ -40,7 +41,7 @@ TEST(Determinism, MpsDamBreakSameOnOneAndTwoThreads) {
     omp_set_num_threads(threads);
     Simulation<2> sim(testing::load_case("dam_break_2d_mps.yaml", {"spacing=0.05"}));
     testing::run_until(sim, 0.1, [](const StepClock&) {});
-    runs[threads - 1] = sim.state().particles;
+    runs[threads - 1] = testing::particle_state(sim).particles;
   }
   omp_set_num_threads(before);
   ASSERT_EQ(runs[0].size(), runs[1].size());
@@ -67,8 +68,8 @@ void expect_same_runs(const Simulation<D>& one, const Simulation<D>& two, long l
     EXPECT_EQ(one.coupler().fluid_force()[b], two.coupler().fluid_force()[b]) << "body " << b;
     EXPECT_EQ(one.bodies().system().contact_force()[b], two.bodies().system().contact_force()[b]);
   }
-  const auto& p1 = one.state().particles;
-  const auto& p2 = two.state().particles;
+  const auto& p1 = testing::particle_state(one).particles;
+  const auto& p2 = testing::particle_state(two).particles;
   ASSERT_EQ(p1.size(), p2.size());
   for (std::size_t i = 0; i < p1.size(); ++i) {
     ASSERT_EQ(p1.position[i], p2.position[i]) << "particle " << i;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <numbers>
 
+#include "particle_state_of.hpp"
 #include "physics_support.hpp"
 #include "reported_figure.hpp"
 #include "sluice/fluid/granular/granular_model.hpp"
@@ -57,7 +58,7 @@ TEST(Granular, SameOnOneAndTwoThreads) {
   const auto [one, two] = testing::on_one_and_two_threads([] {
     Simulation<2> sim(load_case("dam_break_2d.yaml", {"model.name=granular", "spacing=0.05"}));
     run_until(sim, 0.1, [](const StepClock&) {});
-    return sim.state().particles;
+    return testing::particle_state(sim).particles;
   });
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) {
@@ -94,7 +95,7 @@ TEST(Granular, BoxFloatsOnThePool) {
   // 0.5 m of the walls) holds, above the level of the box's bottom, the box's mass per unit
   // width (700 kg/m^2): the pressure there is the weight above it. The draft follows from the
   // pool's bulk density (its packing between 0.2 and 1 m up times the spheres' density).
-  const auto& ps = sim.state().particles;
+  const auto& ps = testing::particle_state(sim).particles;
   const auto& model = dynamic_cast<const GranularModel<2>&>(sim.fluid());
   const double bottom = height - 0.5;
   double area = 0, mass = 0, above = 0;
@@ -127,7 +128,7 @@ TEST(Granular, BoxFloatsOnThePool) {
 // tenth of a radius), directly or through others, with the grain nearest the wall's foot;
 // grains thrown clear do not count (validation/column_collapse.py measures it the same way).
 double deposit_front(const Simulation<2>& sim) {
-  const auto& ps = sim.state().particles;
+  const auto& ps = testing::particle_state(sim).particles;
   const auto& model = dynamic_cast<const GranularModel<2>&>(sim.fluid());
   std::vector<std::size_t> grains;
   for (std::size_t i = 0; i < ps.size(); ++i) {

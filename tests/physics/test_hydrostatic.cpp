@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "particle_state_of.hpp"
 #include "physics_support.hpp"
 #include "reported_figure.hpp"
 #include "sluice/sim/probes.hpp"
@@ -16,7 +17,7 @@ TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
   Simulation<2> sim(config);
   const double g = 9.81, rho0 = config.fluid.density, depth = 1.0;
   double worst_speed = 0;
-  const auto& s = sim.state();
+  const auto& s = testing::particle_state(sim);
   testing::run_until(sim, 2.0, [&](const StepClock&) {
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
       if (s.particles.is_fluid(i))
@@ -72,8 +73,8 @@ TEST(HydrostaticTank2D, MpsBottomPressureAveragedOverATenthOfASecond) {
   const io::CaseConfig config = testing::load_case("hydrostatic_2d_mps.yaml");
   Simulation<2> sim(config);
   const double g = 9.81, rho0 = config.fluid.density, depth = 1.0;
-  const std::size_t particles = sim.state().particles.size();
-  const std::size_t fluid = sim.state().fluid_count;
+  const std::size_t particles = testing::particle_state(sim).particles.size();
+  const std::size_t fluid = testing::particle_state(sim).fluid_count;
   io::ProbeConfig bottom;
   bottom.kind = io::ProbeKind::kPressure;
   bottom.point = Vec3(0.5, 0, 0);
@@ -90,7 +91,7 @@ TEST(HydrostaticTank2D, MpsBottomPressureAveragedOverATenthOfASecond) {
   ASSERT_GT(samples, 10);
   const double mean = sum / samples;
   const double noise = std::sqrt(std::max(0.0, sum2 / samples - mean * mean));
-  const auto& s = sim.state();
+  const auto& s = testing::particle_state(sim);
   std::size_t outside = 0, fluid_now = 0;
   double fastest = 0;
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
@@ -136,7 +137,7 @@ TEST(MpsWalls, WaterUnderALidKeepsTheOpenWatersPressureWhenAStepIsShortened) {
       const double landing = 0.02 * k;
       while (sim.time() < landing * (1 - 1e-12)) sim.step(landing);
       if (landing < 0.3) continue;
-      const auto& ps = sim.state().particles;
+      const auto& ps = testing::particle_state(sim).particles;
       double sum_under = 0, sum_open = 0;
       int count_under = 0, count_open = 0;
       for (std::size_t i = 0; i < ps.size(); ++i) {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "particle_state_of.hpp"
 #include "physics_support.hpp"
 #include "reported_figure.hpp"
 
@@ -53,9 +54,9 @@ void expect_hydrostatic_lift(const std::string& model) {
   Simulation<3> sim(config);
   const AxisBox& block = config.fluid.blocks.front().box;
   const Vec3 extent = block.max - block.min;
-  const double water_volume = model == "mac"
-                                  ? extent.prod() - submerged_volume(config, block.max.z())
-                                  : sim.state().fluid_count * std::pow(config.spacing, 3);
+  const double water_volume =
+      model == "mac" ? extent.prod() - submerged_volume(config, block.max.z())
+                     : testing::particle_state(sim).fluid_count * std::pow(config.spacing, 3);
   const double level = still_level(config, water_volume);
   const double expected =
       config.fluid.density * -config.gravity.z() * submerged_volume(config, level);

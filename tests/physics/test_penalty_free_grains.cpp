@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "particle_state_of.hpp"
 #include "physics_support.hpp"
 
 namespace sluice {
@@ -80,7 +81,7 @@ model:
   ASSERT_EQ(sim.bodies().count(), 1u);
   auto momentum = [&] {
     Vec3 p = sim.bodies().state(0).mass * sim.bodies().state(0).velocity;
-    const auto& ps = sim.state().particles;
+    const auto& ps = testing::particle_state(sim).particles;
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (ps.is_fluid(i)) p += ps.mass[i] * ps.velocity[i];
     }

@@ -17,6 +17,7 @@
 #if defined(SLUICE_WITH_CUDA)
 #include "sluice/exec/cuda_backend_check.hpp"
 #endif
+#include "particle_state_of.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/sim/probes.hpp"
 #include "sluice/sim/size_estimate.hpp"
@@ -43,11 +44,11 @@ RunEnd<D> run_to(const io::CaseConfig& config, double end,
     ++out.steps;
     if (!after_each_step) return;
     sim.fluid().frame();  // the device's copy comes back first, as below
-    after_each_step(sim.state().particles);
+    after_each_step(testing::particle_state(sim).particles);
   });
   out.energy = sim.fluid().energy();  // on a device, summed there
   sim.fluid().frame();                // a reader of the particles: the device's copy comes back
-  const auto& ps = sim.state().particles;
+  const auto& ps = testing::particle_state(sim).particles;
   out.position = ps.position;
   out.velocity = ps.velocity;
   out.density = ps.density;

@@ -37,11 +37,6 @@ class Simulation {
   bool has_model() const { return config_.has_fluid(); }
   const FluidSystem& fluid() const { return *fluid_; }
   FluidSystem& fluid() { return *fluid_; }
-  // The particles of the fluid: every model so far is a particle model.
-  const ParticleState<D>& state() const { return particle_fluid().state(); }
-  const ParticleFluid<D>& particle_fluid() const {
-    return dynamic_cast<const ParticleFluid<D>&>(*fluid_);
-  }
   const RigidBodies& bodies() const { return *bodies_; }
   const Coupler& coupler() const { return coupler_; }
   const StageTimers& timers() const { return timers_; }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "particle_state_of.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/sim/probes.hpp"
 #include "sluice/sim/simulation.hpp"
@@ -53,7 +54,7 @@ TEST(AddingAModel, RegisteredNextToTheShippedOnes) {
 TEST(AddingAModel, TheEngineStepsItWithABody) {
   Simulation<2> sim(still_tank("  name: still_water\n  time_step: 0.01\n"), with_still_water());
   EXPECT_EQ(sim.fluid().describe(), "still_water: time step 0.01 s");
-  const std::vector<Vec<2>> start = sim.state().particles.position;
+  const std::vector<Vec<2>> start = testing::particle_state(sim).particles.position;
   const double z0 = sim.bodies().state(0).position[2];
   while (sim.time() < 0.2 - 1e-12) sim.step(0.2);
   EXPECT_EQ(sim.clock().step, 20);
@@ -62,7 +63,7 @@ TEST(AddingAModel, TheEngineStepsItWithABody) {
   const double g = 9.81, t = 0.2;
   EXPECT_NEAR(sim.bodies().state(0).position[2], z0 - 0.5 * g * t * t, 1e-9);
   EXPECT_EQ(sim.coupler().fluid_force()[0], Vec3::Zero());
-  const auto& ps = sim.state().particles;
+  const auto& ps = testing::particle_state(sim).particles;
   double lowest_body_point = 1;
   for (std::size_t i = 0; i < ps.size(); ++i) {
     if (ps.kind[i] == ParticleKind::kBody)
@@ -130,7 +131,8 @@ TEST(AddingAModel, RunsOnTheEmulatedDeviceWithoutCodeOfItsOwnForIt) {
             {},
             sim.bodies().state(0).position,
             sim.fluid().energy()};
-    const auto& ps = sim.state().particles;  // the device's copy came back for the frame
+    const auto& ps =
+        testing::particle_state(sim).particles;  // the device's copy came back for the frame
     end.position = ps.position;
     end.depth.assign(ps.components<Real>("depth"), ps.components<Real>("depth") + ps.size());
     return end;
@@ -169,7 +171,7 @@ TEST(AddingAModel, OnTheEmulatedDeviceTheHostsSetIsACache) {
   for (const std::string device : {"cpu", "emulated"}) {
     Simulation<2> sim(io::parse_case(tank + device + "}\n", "still.yaml"), with_still_water());
     sim.step(0.2);
-    auto& cache = const_cast<ParticleSet<2>&>(sim.state().particles);
+    auto& cache = const_cast<ParticleSet<2>&>(testing::particle_state(sim).particles);
     std::fill_n(cache.components<Real>("depth"), cache.size(), -1.0);
     const io::PolyFrame frame = sim.fluid().frame().points;
     const auto depth = std::find_if(frame.float_arrays.begin(), frame.float_arrays.end(),
