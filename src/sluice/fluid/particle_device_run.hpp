@@ -248,6 +248,7 @@ class ParticleDeviceRun {
   // finds the device's cell starts (the host's set is sorted by cell already).
   void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) {
     particles_.upload(host);
+    find_fields();
     const std::size_t n = size();
     key_.resize(n);
     order_.resize(n);
@@ -275,17 +276,13 @@ class ParticleDeviceRun {
   // particles by kind.
   void sort_by_cell() {
     const std::size_t n = size();
-    Real* carried = setup_.carried_velocity.empty()
-                        ? nullptr
-                        : particles_.template components<Real>(setup_.carried_velocity);
-    Real* position = particles_.template components<Real>("position");
-    Backend::for_each(n, device_bodies::KeepOutOfWalls<D>{
-                             walls_, kind(), position,
-                             particles_.template components<Real>("velocity"), carried});
     Backend::for_each(
-        n, device_bodies::CellKey<D>{position, setup_.cells, key_.data(), order_.data()});
+        n, device_bodies::KeepOutOfWalls<D>{walls_, f_.kind, f_.position, f_.velocity, f_.carried});
+    Backend::for_each(
+        n, device_bodies::CellKey<D>{f_.position, setup_.cells, key_.data(), order_.data()});
     Backend::sort_by_key(key_, order_, n, key_bits_, workspace_);
     particles_.gather(order_.data());
+    find_fields();  // the gather swapped every field's array
     Backend::for_each(setup_.cell_count + 1,
                       device_bodies::CellStart{key_.data(), n, cell_start_.data()});
     list_by_kind();
@@ -301,11 +298,9 @@ class ParticleDeviceRun {
         device_bodies::RigidPoint{body_motion_.data(), point_body_.data(), point_local_.data(),
                                   point_position_.data(), point_velocity_.data(),
                                   point_acceleration_.data()});
-    Backend::for_each(size(), device_bodies::PlaceBodyPoint<D>{
-                                  particles_.template components<std::int32_t>("body_point"),
-                                  particles_.template components<Real>("position"),
-                                  particles_.template components<Real>("velocity"),
-                                  point_position_.data(), point_velocity_.data()});
+    Backend::for_each(
+        size(), device_bodies::PlaceBodyPoint<D>{f_.body_point, f_.position, f_.velocity,
+                                                 point_position_.data(), point_velocity_.data()});
   }
   const Real* point_acceleration() const { return point_acceleration_.data(); }
 
@@ -363,10 +358,8 @@ class ParticleDeviceRun {
   // The fluid's kinetic and potential energy and mass (fluid_energy.hpp), summed on the device.
   // `gravity` holds D reals.
   FluidEnergy energy(const Real* gravity) const {
-    const auto share = FluidEnergyShare<D>::over(particles_.template components<Real>("mass"),
-                                                 particles_.template components<Real>("position"),
-                                                 particles_.template components<Real>("velocity"),
-                                                 kind(), gravity);
+    const auto share =
+        FluidEnergyShare<D>::over(f_.mass, f_.position, f_.velocity, f_.kind, gravity);
     return fluid_energy(share, [&](const FluidEnergyShare<D>& part) {
       return Backend::sum_of(size(), part, workspace_);
     });
@@ -383,16 +376,27 @@ class ParticleDeviceRun {
   void finish() const { Backend::finish(); }
 
  private:
-  const std::int32_t* kind() const { return particles_.template components<std::int32_t>("kind"); }
+  // The engine's fields' arrays, found by name once after each upload and sort (the only times
+  // they move), not in every stage.
+  struct EngineFields {
+    Real *position = nullptr, *velocity = nullptr, *density = nullptr, *pressure = nullptr;
+    Real *mass = nullptr, *carried = nullptr;  // carried: nullptr for none
+    std::int32_t *kind = nullptr, *body_point = nullptr;
+  };
+  void find_fields() {
+    auto reals = [&](const char* name) { return particles_.template components<Real>(name); };
+    f_.position = reals("position");
+    f_.velocity = reals("velocity");
+    f_.density = reals("density");
+    f_.pressure = reals("pressure");
+    f_.mass = reals("mass");
+    f_.carried = setup_.carried_velocity.empty() ? nullptr : reals(setup_.carried_velocity.c_str());
+    f_.kind = particles_.template components<std::int32_t>("kind");
+    f_.body_point = particles_.template components<std::int32_t>("body_point");
+  }
 
   ParticleCheck<D> checker() const {
-    ParticleCheck<D> c{particles_.template components<Real>("position"),
-                       particles_.template components<Real>("velocity"),
-                       particles_.template components<Real>("density"),
-                       particles_.template components<Real>("pressure"),
-                       kind(),
-                       {},
-                       {}};
+    ParticleCheck<D> c{f_.position, f_.velocity, f_.density, f_.pressure, f_.kind, {}, {}};
     for (int a = 0; a < D; ++a) {
       c.escape_min[a] = setup_.escape_min[a];
       c.escape_max[a] = setup_.escape_max[a];
@@ -404,14 +408,15 @@ class ParticleDeviceRun {
   // the fluid first, in kind_list_.
   void list_by_kind() {
     const std::size_t n = size();
-    Backend::for_each(n, device_bodies::FluidFlag{kind(), flag_.data()});
+    Backend::for_each(n, device_bodies::FluidFlag{f_.kind, flag_.data()});
     Backend::inclusive_scan(flag_.data(), fluid_before_.data() + 1, n, workspace_);
-    Backend::for_each(n, device_bodies::ListByKind{kind(), fluid_before_.data(), kind_list_.data(),
+    Backend::for_each(n, device_bodies::ListByKind{f_.kind, fluid_before_.data(), kind_list_.data(),
                                                    kind_list_.data() + fluid_count_});
   }
 
   ParticleDeviceSetup<D> setup_;
   DeviceParticleSet<D, Backend> particles_;
+  EngineFields f_;
   std::size_t fluid_count_ = 0;
   int key_bits_ = 32;
   Array<std::uint32_t> key_, order_, flag_, cell_start_, fluid_before_, kind_list_;

@@ -47,6 +47,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
                     &packed_fluid_, &packed_viscous_weight_})
       a->resize(n);
     base_.upload(host, point_acceleration);
+    find_fields();
     bytes_per_particle_ = wcsph_device_run_bytes_per_particle<D, Backend>(host);
     // The packed copy the host's last rates read, for the bodies' first loads.
     pack(true);
@@ -60,7 +61,10 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     base_.for_each(WcsphKickDrift<D>{fields(), dt, constants_.eos});
   }
 
-  void sort_by_cell() override { base_.sort_by_cell(); }
+  void sort_by_cell() override {
+    base_.sort_by_cell();
+    find_fields();  // the sort's gather swapped every field's array
+  }
 
   void set_body_motion(const std::vector<Real>& body_motion) override {
     base_.set_body_motion(body_motion);
@@ -100,9 +104,10 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   void download_remembered(ParticleSet<D>& host) const override { base_.download_remembered(host); }
 
  private:
-  WcsphFields<D> fields() const {
-    return wcsph_fields<D>(base_.particles(), base_.point_acceleration());
-  }
+  // The fields' arrays, found by name once after each upload and sort (the only times they
+  // move), not in every stage: a GPU step is short enough for the look-ups to show.
+  void find_fields() { fields_ = wcsph_fields<D>(base_.particles(), base_.point_acceleration()); }
+  const WcsphFields<D>& fields() const { return fields_; }
   template <class T>
   static T* mutable_data(const Array<T>& a) {
     return const_cast<T*>(a.data());
@@ -136,6 +141,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
 
   WcsphConstants<D, Kernel> constants_;
   ParticleDeviceRun<D, Backend> base_;
+  WcsphFields<D> fields_;
   double bytes_per_particle_ = 0;
   Array<float> packed_position_[3], packed_velocity_[3], packed_viscous_velocity_[3];
   Array<float> packed_density_, packed_pressure_, packed_pressure_term_, packed_volume_,
