@@ -15,6 +15,7 @@ usage: /usr/bin/python3 validation/fording_convergence.py [--no-run | --resume] 
 """
 import math
 import os
+import sys
 
 import matplotlib
 
@@ -22,8 +23,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from probes_csv import read_probe
-from runs import (ROOT, each_run, model_runs_parser, run_model, run_statistics, save_figure,
-                  write_table)
+from runs import (ROOT, each_run, keep_results, model_runs_parser, result_path, result_statistics,
+                  run_model, save_figure, write_table)
 
 MODELS = ("wcsph", "mps", "penalty-sph", "constraint", "mac", "granular", "mac-prescribed")
 # mac's projection couples free bodies (Batty et al. 2007) but not the joints and contacts that
@@ -61,10 +62,11 @@ def running_mean(t, v, window=PEAK_WINDOW):
     return (cumulative[last] - cumulative[first]) / (last - first)
 
 
-def figures(out):
-    """The run's figures, or None where it wrote no loads."""
-    path = os.path.join(out, "loads.csv")
-    if not os.path.exists(path):
+def figures(out, name):
+    """The run's figures (from OUT, or what keep_results kept of run NAME), or None where it
+    wrote no loads."""
+    path = result_path(out, name, "loads.csv")
+    if path is None:
         return None
     loads = np.genfromtxt(path, delimiter=",", names=True)
     t = loads["time"]
@@ -79,9 +81,9 @@ def figures(out):
         result[f"peak_{load}"] = result[f"{load}_series"][window[later]].max() \
             if t[-1] >= MEAN_FROM else math.nan
     for gauge in GAUGES:
-        times, heights = read_probe(os.path.join(out, "probes.csv"), gauge)
+        times, heights = read_probe(result_path(out, name, "probes.csv"), gauge)
         result[gauge] = max(heights) - heights[0]
-    statistics = run_statistics(out) or {}
+    statistics = result_statistics(out, name) or {}
     result["steps"] = statistics.get("steps", math.nan)
     result["wall"] = statistics.get("wall_per_simulated_second") or math.nan
     result["threads"] = statistics.get("threads", 0)
@@ -169,10 +171,18 @@ def main():
     results = {}
     for model, spacing in each_run(args.runs):
         out = run_dir(args, model, spacing)
+        kept = f"fording/{model}_{spacing:g}"
         if not args.no_run:
             name, extra = VARIANTS.get(model, (model, []))
             run_model("fording", out, name, spacing, END, args, extra)
-        results[(model, spacing)] = figures(out)
+        keep_results(out, kept, ("loads.csv", "probes.csv"))
+        results[(model, spacing)] = figures(out, kept)
+    # A table is written when every one of its runs has results (a run directory, or what
+    # keep_results kept in validation/results/); else it is left as it is.
+    missing = [f"{m}@{s:g}" for (m, s), f in results.items() if f is None]
+    if missing:
+        sys.exit(f"fording_convergence.py: no results for {', '.join(missing)}: tables and plot "
+                 "left as they are")
     spacings = sorted({s for _, s in results}, reverse=True)
     for spacing in spacings:
         write_table("validation.md", f"b5-{spacing:g}", spacing_table(results, spacing))

@@ -23,8 +23,8 @@ import matplotlib
 matplotlib.use("Agg")
 import kleefsman_figures as f3
 import matplotlib.pyplot as plt
-from runs import (ROOT, each_run, model_runs_parser, run_model, run_statistics, save_figure,
-                  write_table)
+from runs import (ROOT, each_run, keep_results, model_runs_parser, result_path,
+                  result_statistics, run_model, save_figure, write_table)
 
 # Every model at 0.03 m; mac's cells must tile the 3.22 m x 1 m tank, so its coarse run is at
 # 0.02 m, the nearest that does. wcsph and mps also at 0.015 m.
@@ -120,8 +120,9 @@ def bars_table(results, experiment):
 VARIANT_COLOURS = ["tab:cyan", "tab:olive", "tab:pink", "tab:gray"]
 
 
-def plot(results, experiment, names, title, filename, scale, unit, zoom=None):
-    """One row per probe: the whole run, and beside it the span `zoom` (the first impact)."""
+def plot(results, experiment, names, title, filename, scale, unit, seed_spacing, zoom=None):
+    """One row per probe: the whole run, and beside it the span `zoom` (the first impact);
+    pressures beside seed 000's MPS at l0 = seed_spacing."""
     columns = 2 if zoom else 1
     fig, axes = plt.subplots(len(names), columns, figsize=(5 * columns + 2, 2.1 * len(names) + 1),
                              sharex="col", squeeze=False)
@@ -138,9 +139,9 @@ def plot(results, experiment, names, title, filename, scale, unit, zoom=None):
                             STYLES.get(key[1], "-"), color=colours[key], lw=0.7,
                             label=f"sluice {key[0]}, {key[1]:g} m")
             if name in f3.SENSORS:
-                seed = f3.seed000(0.03)
+                seed = f3.seed000(seed_spacing)
                 ax.plot(seed["time"], f3.smoothed(seed, name) * scale, color="0.6", lw=0.7,
-                        label="seed 000's MPS, l0 = 0.03 m")
+                        label=f"seed 000's MPS, l0 = {seed_spacing:g} m")
                 ax.set_ylim(-2, 20)
             ax.set_xlim(*span)
             ax.grid(alpha=0.3)
@@ -155,6 +156,18 @@ def plot(results, experiment, names, title, filename, scale, unit, zoom=None):
     save_figure(fig, filename, rect=(0, 0.02 + 0.011 * len(labels), 1, 1))
 
 
+# The runs' two groups, each with its own table and plots: the coarse runs (every model, with
+# the CI checks' bars) and the finer runs beside seed 000 at 0.015 m. A group's table and plots
+# are written when every one of its runs has results (a run directory, or what keep_results
+# kept of it in validation/results/); else they are left as they are.
+GROUPS = (
+    {"fine": False, "table": "f3", "seed": 0.03, "gauges": "f3_kleefsman_gauges.png",
+     "pressure": "f3_kleefsman_pressure.png"},
+    {"fine": True, "table": "f3-fine", "seed": 0.015, "gauges": "f3_kleefsman_fine_gauges.png",
+     "pressure": "f3_kleefsman_fine_pressure.png"},
+)
+
+
 def main():
     parser = model_runs_parser("kleefsman_3d", __doc__.splitlines()[0], RUNS)
     parser.add_argument("--variants", action="store_true",
@@ -166,26 +179,36 @@ def main():
     experiment = f3.experiment()
     results = {}
     for model, spacing in each_run(runs):
-        if not args.no_run:
-            run_model("kleefsman_3d", run_dir(args, model, spacing), model, spacing, end, args)
         out = run_dir(args, model, spacing)
-        path = os.path.join(out, "probes.csv")
-        series = f3.read_probes(path) if os.path.exists(path) else None
+        name = f"kleefsman_3d{'_variants' if args.variants else ''}/{model}_{spacing:g}"
+        if not args.no_run:
+            run_model("kleefsman_3d", out, model, spacing, end, args)
+        keep_results(out, name)
+        path = result_path(out, name, "probes.csv")
+        series = f3.read_probes(path) if path else None
         span = (0.0, min(end, float(series["time"][-1]))) if series is not None else (0.0, end)
-        statistics = run_statistics(out)
+        statistics = result_statistics(out, name)
         results[(model, spacing)] = (series, span,
                                      statistics and statistics["wall_per_simulated_second"])
 
     if args.variants:
         write_table("validation.md", "f3-variants", table(results, experiment, end))
         return
-    write_table("validation.md", "f3", table(results, experiment, end))
-    write_table("validation.md", "f3-bars", bars_table(results, experiment))
-    plot(results, experiment, f3.GAUGES, "F3: water height at the gauges (x in mm)",
-         "f3_kleefsman_gauges.png", 1.0, "m")
-    plot(results, experiment, f3.SENSORS[:4],
-         "F3: pressure on the obstacle's face, 5 ms running means", "f3_kleefsman_pressure.png",
-         1e-3, "kPa", zoom=(0.3, 1.0))
+    for group in GROUPS:
+        mine = {key: value for key, value in results.items() if (key[1] < 0.02) == group["fine"]}
+        missing = [f"{m}@{s:g}" for (m, s), value in mine.items() if value[0] is None]
+        if not mine or missing:
+            print(f"table {group['table']} and its plots left as they are"
+                  + (f": no results for {', '.join(missing)}" if missing else ""))
+            continue
+        write_table("validation.md", group["table"], table(mine, experiment, end))
+        if not group["fine"]:
+            write_table("validation.md", "f3-bars", bars_table(mine, experiment))
+        plot(mine, experiment, f3.GAUGES, "F3: water height at the gauges (x in mm)",
+             group["gauges"], 1.0, "m", group["seed"])
+        plot(mine, experiment, f3.SENSORS[:4],
+             "F3: pressure on the obstacle's face, 5 ms running means", group["pressure"],
+             1e-3, "kPa", group["seed"], zoom=(0.3, 1.0))
 
 
 if __name__ == "__main__":

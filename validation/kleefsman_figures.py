@@ -8,7 +8,7 @@ tests/physics/test_kleefsman.cpp holds the CI run to the same definitions."""
 import os
 
 import numpy as np
-from runs import ROOT
+from runs import ROOT, open_text
 
 DATA = os.path.join(ROOT, "validation", "data")
 SENSORS = [f"P{k}" for k in range(1, 9)]
@@ -56,8 +56,8 @@ def seed000(spacing):
 
 
 def read_probes(path):
-    """OUT/probes.csv: {probe name: numpy array}, with 'time'."""
-    with open(path) as f:
+    """OUT/probes.csv (or its gzipped copy): {probe name: numpy array}, with 'time'."""
+    with open_text(path) as f:
         header = [title.split(" ")[0] for title in f.readline().strip().split(",")]
         values = np.array([[float(x) for x in line.split(",")] for line in f if line.strip()])
     return {name: values[:, k] for k, name in enumerate(header)}

@@ -4,6 +4,7 @@ spacing, resumable), reading one body's CSV from its output, saving a figure to 
 writing a table into a page of docs/."""
 import argparse
 import glob
+import gzip
 import json
 import os
 import subprocess
@@ -101,6 +102,53 @@ def run_statistics(out):
     simulated = sum(leg["simulated_seconds"] - leg.get("start_seconds", 0) for leg in legs)
     return {"steps": steps, "wall": wall, "threads": max(leg["threads"] for leg in legs),
             "wall_per_simulated_second": wall / simulated if simulated > 0 else None}
+
+
+RESULTS = os.path.join(ROOT, "validation", "results")
+
+
+def keep_results(out, name, files=("probes.csv",)):
+    """Keeps a run's small files (gzipped) and its statistics (run_statistics) in
+    validation/results/NAME, which is committed with the tables they give: a long run's figures
+    outlive the machine and the session that ran it (its frames and checkpoints do not). Does
+    nothing where the run wrote none of them."""
+    kept = os.path.join(RESULTS, name)
+    for filename in files:
+        path = os.path.join(out, filename)
+        if os.path.exists(path):
+            os.makedirs(kept, exist_ok=True)
+            # mtime 0: the same file gives the same bytes, so an unchanged result is no change.
+            with open(path, "rb") as f, open(os.path.join(kept, filename + ".gz"), "wb") as g:
+                g.write(gzip.compress(f.read(), mtime=0))
+    statistics = run_statistics(out)
+    if statistics is not None:
+        os.makedirs(kept, exist_ok=True)
+        with open(os.path.join(kept, "statistics.json"), "w") as f:
+            json.dump(statistics, f, indent=1, sort_keys=True)
+
+
+def result_path(out, name, filename):
+    """OUT/FILENAME, or else its copy that keep_results kept for run NAME, or None."""
+    path = os.path.join(out, filename)
+    if os.path.exists(path):
+        return path
+    kept = os.path.join(RESULTS, name, filename + ".gz")
+    return kept if os.path.exists(kept) else None
+
+
+def result_statistics(out, name):
+    """run_statistics(OUT), or else the statistics keep_results kept for run NAME, or None."""
+    statistics = run_statistics(out)
+    kept = os.path.join(RESULTS, name, "statistics.json")
+    if statistics is None and os.path.exists(kept):
+        with open(kept) as f:
+            statistics = json.load(f)
+    return statistics
+
+
+def open_text(path):
+    """A text file for reading, gzipped or not (by its name)."""
+    return gzip.open(path, "rt") if path.endswith(".gz") else open(path)
 
 
 def require(path):
