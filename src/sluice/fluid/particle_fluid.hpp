@@ -1,9 +1,10 @@
-// The base of the particle models (wcsph today; mps and penalty-sph next): it owns the
-// particles and their neighbour grid, fills the fluid blocks, samples the walls in layers as
-// thick as the model's support and places particles in the bodies; it moves the body
-// particles with the bodies, sums the model's forces on them into loads, and answers output,
-// probes and the divergence check from the particles. A model adds its fields, its stages and
-// its forces on the body particles.
+// The base of the particle models: it owns the particles and their neighbour grid, fills the
+// fluid blocks, samples the walls in layers as thick as the model's support and places
+// particles in the bodies; it moves the body particles with the bodies, sums the model's forces
+// on them into loads, and answers output, probes and the divergence check from the particles.
+// A model adds its fields, its stages and its forces on the body particles. The particles live
+// on the host, or on a device (particle_device.hpp) where the base runs its own services and
+// keeps the host's set as a cache.
 #pragma once
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // A WCSPH run whose particles live in a device's memory for the whole run (issue 16): the
-// model (wcsph_model.hpp) hands it its fields once, calls its stages each step, and copies the
-// fields back only for output, probes and checkpoints. The stages run the loop bodies the host
-// runs (wcsph_loop_bodies.hpp, adami_walls.hpp) through a backend: CUDA on a GPU
+// particle base's device (particle_device.hpp, which the base owns and runs its own services
+// on) with wcsph's stages, which the model calls each step. The stages run the loop bodies the
+// host runs (wcsph_loop_bodies.hpp, adami_walls.hpp) through a backend: CUDA on a GPU
 // (wcsph_device_cuda.cu, built where nvcc is found), or the host's own threads over the same
 // arrays ("emulated"), which is how the device run's bookkeeping (sort, scans, gathers,
 // reductions, transfers) is tested on machines without a GPU.
