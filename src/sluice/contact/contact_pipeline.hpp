@@ -1,12 +1,11 @@
 // Contact between rigid bodies as one pipeline, run at every solid sub-step: place each body's
 // surface particles, a broad phase on a grid (candidate body pairs), the narrow phase (particle
 // pairs with face normals and gaps), a contact set with persistent identities, and a solver
-// that turns the contacts into forces. The rigid system sees it as a BodyInteraction.
+// that turns the contacts into forces or into friction cones of the velocity step
+// (contact_solver.hpp). The rigid system sees it as a BodyInteraction.
 #pragma once
 
-#include <array>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include "sluice/contact/broad_phase.hpp"
@@ -33,18 +32,21 @@ class ContactPipeline final : public BodyInteraction {
   // The solver's step for every pair of bodies that can come within reach during dt.
   double stable_step(const std::vector<SystemBody>& bodies, double dt) override;
   double stored_energy() const override { return solver_->stored_energy(); }
-  // Complementarity: each particle pair of the narrow phase as a friction cone (the pair's
-  // smaller friction), warm-started from the impulses of the same contact's pair of the last
-  // call.
+  bool in_velocity_step() const override { return solver_->in_velocity_step(); }
+  // The particle pairs that may close within the step (the contact distance apart) as the
+  // solver's friction cones.
   void contact_constraints(const std::vector<SystemBody>& bodies, double h, double recovery_speed,
                            RowGroup& rows) override;
-  void remember_contact_impulses(const RowGroup& rows) override;
+  void remember_contact_impulses(const RowGroup& rows) override {
+    solver_->remember_impulses(rows);
+  }
 
-  // Checkpoints: the contacts with their histories, the last impulses, the solver's state (the
-  // bodies' places and the candidate pairs are found anew each call).
+  // Checkpoints: the contacts with their histories and the solver's state (the bodies' places
+  // and the candidate pairs are found anew each call).
   void archive_state(StateArchive& a) {
     a.section("contacts");
-    a(contacts_, last_impulses_);
+    a(contacts_);
+    a.section(solver_->in_velocity_step() ? "contact_cones" : "contact_forces");
     solver_->archive_state(a);
   }
 
@@ -65,8 +67,6 @@ class ContactPipeline final : public BodyInteraction {
   std::vector<AxisBox> boxes_;
   std::vector<bool> fixed_, large_;
   std::vector<BodyPair> pairs_;
-  // The last call's normal and tangential impulses by (contact id, pair index).
-  std::unordered_map<std::uint64_t, std::array<Real, 3>> last_impulses_;
 };
 
 }  // namespace sluice

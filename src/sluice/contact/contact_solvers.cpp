@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sluice/contact/complementarity_contact_solver.hpp"
 #include "sluice/contact/penalty_contact_solver.hpp"
 
 namespace sluice {
@@ -27,6 +28,9 @@ ContactSolverRegistry shipped_contact_solvers() {
   ContactSolverRegistry registry;
   registry.add("penalty", [](const ContactSolverSettings& s) {
     return std::make_unique<PenaltyContactSolver>(s.gravity, s.substep_fraction);
+  });
+  registry.add("complementarity", [](const ContactSolverSettings&) {
+    return std::make_unique<ComplementarityContactSolver>();
   });
   return registry;
 }

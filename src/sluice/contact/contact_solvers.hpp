@@ -1,5 +1,6 @@
-// Contact solvers found by name (a case's `contact.solver`): each registers a factory; the
-// case reader's "available: ..." list is the registry's. The penalty law is the first.
+// Contact solvers found by name (a case's `contact.method`): each registers a factory; the
+// case reader's "expected one of" list is the registry's. `penalty` (forces, sub-cycled) and
+// `complementarity` (cones of the velocity step) ship.
 #pragma once
 
 #include <functional>

@@ -7,9 +7,8 @@ namespace sluice {
 MultibodySystem::MultibodySystem(double contact_distance, Vec3 gravity, double substep_fraction,
                                  const std::string& solver_name)
     : rigid_(gravity) {
-  auto solver = shipped_contact_solvers().make(solver_name, {gravity, substep_fraction});
-  penalty_ = dynamic_cast<const PenaltyContactSolver*>(solver.get());
-  contact_ = std::make_unique<ContactPipeline>(contact_distance, std::move(solver));
+  contact_ = std::make_unique<ContactPipeline>(
+      contact_distance, shipped_contact_solvers().make(solver_name, {gravity, substep_fraction}));
   rigid_.set_interaction(contact_.get());
 }
 

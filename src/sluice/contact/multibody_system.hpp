@@ -1,6 +1,6 @@
 // Rigid bodies in contact (seed 000: Amaro Junior, Cheng & Osello 2019), assembled: the rigid
 // system (integration, solid sub-cycling, energy; rigid/rigid_system.hpp) with the contact
-// pipeline (contact_pipeline.hpp) and the penalty solver as the force between its bodies.
+// pipeline (contact_pipeline.hpp) and a contact solver by name (contact_solvers.hpp).
 #pragma once
 
 #include <memory>
@@ -9,7 +9,6 @@
 
 #include "sluice/contact/contact_body.hpp"
 #include "sluice/contact/contact_pipeline.hpp"
-#include "sluice/contact/penalty_contact_solver.hpp"
 #include "sluice/rigid/rigid_system.hpp"
 
 namespace sluice {
@@ -24,10 +23,10 @@ class MultibodySystem {
 
   std::size_t add(ContactBody body);
 
-  // Contact by the penalty law with sub-cycling (the default), or as friction cones of the
-  // velocity-level step (complementarity).
-  void set_method(ContactMethod method, const VelocityStepSettings& settings) {
-    rigid_.set_method(method, settings);
+  // The velocity-level step's settings (joints; contacts too where the solver is of the
+  // velocity step).
+  void set_velocity_step(const VelocityStepSettings& settings) {
+    rigid_.set_velocity_step(settings);
   }
   void add_joint(const Joint& joint) { rigid_.add_joint(joint); }
 
@@ -51,7 +50,7 @@ class MultibodySystem {
   const std::vector<Vec3>& contact_force() const { return rigid_.interaction_force(); }
   const std::vector<Vec3>& contact_torque() const { return rigid_.interaction_torque(); }
   // The deepest overlap at any sub-step so far (penalty solver; 0 for another).
-  double deepest_overlap_ever() const { return penalty_ ? penalty_->deepest_overlap_ever() : 0; }
+  double deepest_overlap_ever() const { return contact_->solver().deepest_overlap_ever(); }
   long substeps_taken() const { return rigid_.substeps_taken(); }
   const RigidSystem& rigid() const { return rigid_; }
 
@@ -64,7 +63,6 @@ class MultibodySystem {
  private:
   // On the heap, so that the rigid system's pointer to it survives moving the system.
   std::unique_ptr<ContactPipeline> contact_;
-  const PenaltyContactSolver* penalty_;
   RigidSystem rigid_;
 };
 

@@ -20,6 +20,7 @@ class PenaltyContactSolver final : public ContactSolver {
   PenaltyContactSolver(Vec3 gravity, double substep_fraction)
       : gravity_(gravity), substep_fraction_(substep_fraction) {}
 
+  bool in_velocity_step() const override { return false; }
   void solve(ContactSet& contacts, const std::vector<SystemBody>& bodies,
              const std::vector<ContactShape>& shapes, double dt, std::vector<Vec3>& force,
              std::vector<Vec3>& torque) override;
@@ -33,7 +34,7 @@ class PenaltyContactSolver final : public ContactSolver {
     a(elastic_energy_, deepest_overlap_, deepest_overlap_ever_);
   }
   // The deepest overlap at any solve so far.
-  double deepest_overlap_ever() const { return deepest_overlap_ever_; }
+  double deepest_overlap_ever() const override { return deepest_overlap_ever_; }
 
  private:
   const ContactPair& law(std::size_t a, std::size_t b, const std::vector<SystemBody>& bodies,

@@ -8,12 +8,12 @@ namespace sluice {
 
 void require_complementarity(io::CaseConfig& config, const std::string& model,
                              const std::string& why) {
-  if (config.contact.method == ContactMethod::kPenalty) {
+  if (config.contact.method && *config.contact.method != "complementarity") {
     throw InputError(
         config.file(), config.contact.line, "contact.method",
         fmt::format("the {} model needs contact.method: complementarity ({})", model, why));
   }
-  config.contact.method = ContactMethod::kComplementarity;
+  config.contact.method = "complementarity";
 }
 
 }  // namespace sluice

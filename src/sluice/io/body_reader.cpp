@@ -157,12 +157,6 @@ JointConfig read_joint(MapReader& map, std::size_t index) {
 }
 
 void read_velocity_step(MapReader& contact, ContactConfig& c) {
-  if (contact.has("method")) {
-    c.method = contact.optional_choice("method", "penalty", "contact method",
-                                       {"penalty", "complementarity"}) == "penalty"
-                   ? ContactMethod::kPenalty
-                   : ContactMethod::kComplementarity;
-  }
   if (!contact.has("complementarity")) return;
   MapReader map = contact.map("complementarity");
   VelocityStepSettings& s = c.velocity_step;

@@ -17,7 +17,7 @@ BodyConfig read_body(MapReader& body, std::size_t index, const std::string& case
 // when the bodies are built.
 JointConfig read_joint(MapReader& joint, std::size_t index);
 
-// Reads the `contact` mapping's velocity-level step: `method` and `complementarity`.
+// Reads the `contact` mapping's velocity-level step settings (`complementarity`).
 void read_velocity_step(MapReader& contact, ContactConfig& config);
 
 // Reads an optional `material` mapping (young, poisson, restitution, friction) over `fallback`.

@@ -73,12 +73,12 @@ struct ProbeConfig {
 // sub-step is `substep_fraction` of the shortest contact period. Without sub-cycling the fluid
 // itself steps at the solid step whenever a contact is in reach (for comparisons, C6).
 struct ContactConfig {
-  // penalty: the law of `solver`, sub-cycled; complementarity: friction cones of the
-  // velocity-level step (rigid/rigid_system.hpp). Unset: the model's choice (penalty, but for
-  // the granular model).
-  std::optional<ContactMethod> method;
-  std::string solver = "penalty";  // a name in shipped_contact_solvers()
-  double distance = 0;             // default: the particle spacing
+  // The contact solver by name (shipped_contact_solvers()): penalty, forces over solid
+  // sub-steps; complementarity, friction cones of the velocity-level step
+  // (rigid/rigid_system.hpp). Unset: the model's choice (penalty, but for the granular and
+  // constraint models).
+  std::optional<std::string> method;
+  double distance = 0;  // default: the particle spacing
   double substep_fraction = 1.0 / 30;
   bool subcycling = true;
   VelocityStepSettings velocity_step;  // contact.complementarity: the solver, recovery, joints

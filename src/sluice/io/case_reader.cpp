@@ -213,8 +213,17 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
   c.checkpoint_interval = top.optional_non_negative("checkpoint_interval", 0);  // 0: none
   if (top.has("contact")) {
     MapReader contact = top.map("contact");
-    c.contact.solver = contact.optional_choice("solver", c.contact.solver, "contact solver",
-                                               shipped_contact_solvers().names());
+    // `solver` is the method's older name; both name a solver of the registry.
+    for (const char* key : {"method", "solver"}) {
+      if (!contact.has(key)) continue;
+      const std::string name = contact.optional_choice(key, "penalty", "contact method",
+                                                       shipped_contact_solvers().names());
+      if (c.contact.method && *c.contact.method != name) {
+        contact.fail(key, fmt::format("names another method than contact.method ({}): give one",
+                                      *c.contact.method));
+      }
+      c.contact.method = name;
+    }
     c.contact.distance = contact.optional_positive("distance", c.spacing);
     c.contact.substep_fraction =
         contact.optional_positive("substep_fraction", c.contact.substep_fraction);

@@ -18,11 +18,14 @@ struct SystemBody {
   std::function<void(double time, RigidBody& state)> prescribed;
 };
 
-// Forces between bodies that depend on their states, evaluated at every solid sub-step; or,
-// in the complementarity method, the contacts as rows of the velocity-level step.
+// Forces between bodies that depend on their states, evaluated at every solid sub-step; or
+// the contacts as rows of the velocity-level step (complementarity).
 class BodyInteraction {
  public:
   virtual ~BodyInteraction() = default;
+  // Whether the bodies meet as rows of the velocity-level step (contact_constraints) rather
+  // than by forces over sub-steps (evaluate, stable_step).
+  virtual bool in_velocity_step() const { return false; }
   // Force and torque (about each centre of mass) on every body for the bodies' present states;
   // `dt` is the sub-step the forces act over (0: evaluate only), for laws with a history.
   // `force` and `torque` come sized to the bodies and zeroed.

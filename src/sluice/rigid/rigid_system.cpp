@@ -34,7 +34,7 @@ void RigidSystem::evaluate_interaction(double dt) {
 }
 
 double RigidSystem::solid_step(double dt) {
-  if (method_ == ContactMethod::kComplementarity) return dt;
+  if (complementarity()) return dt;
   return interaction_ ? interaction_->stable_step(bodies_, dt) : dt;
 }
 
@@ -97,7 +97,7 @@ void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* part
 
 int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
                          CcpParticipant* participant) {
-  if (method_ == ContactMethod::kComplementarity) {
+  if (complementarity()) {
     advance_complementarity(dt, force, torque, participant);
     return 1;
   }
@@ -188,8 +188,7 @@ RigidSystemEnergy RigidSystem::energy() const {
     e.kinetic += body.state.kinetic_energy();
     e.potential -= body.state.mass * gravity_.dot(body.state.position);
   }
-  e.elastic =
-      interaction_ && method_ == ContactMethod::kPenalty ? interaction_->stored_energy() : 0;
+  e.elastic = interaction_ && !complementarity() ? interaction_->stored_energy() : 0;
   return e;
 }
 

@@ -1,4 +1,5 @@
-// The rigid bodies of a run, advanced together by one of two methods.
+// The rigid bodies of a run, advanced together by one of two methods, as their interaction
+// asks (BodyInteraction::in_velocity_step).
 // Penalty (seed 000's solid sub-cycling): a step of the caller (the fluid's) is split into as
 // many solid sub-steps as the stiffest interaction between bodies needs; forces from outside
 // (the fluid's) are held over the sub-steps, the interaction (contact springs) is evaluated
@@ -21,8 +22,6 @@
 #include "sluice/rigid/rigid_body.hpp"
 
 namespace sluice {
-
-enum class ContactMethod { kPenalty, kComplementarity };
 
 struct RigidSystemEnergy {
   double kinetic = 0;
@@ -58,11 +57,10 @@ class RigidSystem {
   std::size_t add(SystemBody body);
   // The forces between bodies; not owned, must outlive the system (nullptr: none).
   void set_interaction(BodyInteraction* interaction) { interaction_ = interaction; }
-  void set_method(ContactMethod method, const VelocityStepSettings& settings) {
-    method_ = method;
-    velocity_step_ = settings;
-  }
-  ContactMethod method() const { return method_; }
+  void set_velocity_step(const VelocityStepSettings& settings) { velocity_step_ = settings; }
+  // Whether the bodies advance by the complementarity method (the interaction's contacts as
+  // cones of one velocity-level step), not by the penalty method's sub-steps.
+  bool complementarity() const { return interaction_ && interaction_->in_velocity_step(); }
   void add_joint(const Joint& joint) { joints_.push_back(joint); }
   const std::vector<Joint>& joints() const { return joints_; }
 
@@ -107,7 +105,6 @@ class RigidSystem {
   Vec3 gravity_;
   std::vector<SystemBody> bodies_;
   BodyInteraction* interaction_ = nullptr;
-  ContactMethod method_ = ContactMethod::kPenalty;
   VelocityStepSettings velocity_step_;
   std::vector<Joint> joints_;
   std::vector<Vec3> interaction_force_, interaction_torque_;

@@ -61,7 +61,7 @@ RigidBodies::RigidBodies(const io::CaseConfig& config)
       spacing_(config.spacing),
       dimension_(config.dimension),
       system_(config.contact.distance, config.gravity, config.contact.substep_fraction,
-              config.contact.solver) {
+              config.contact.method.value_or("penalty")) {
   const double dx = config.spacing;
   const int dimension = config.dimension;
   std::vector<std::string> names;
@@ -130,8 +130,7 @@ RigidBodies::RigidBodies(const io::CaseConfig& config)
     }
   }
   const std::size_t n = configs_.size();
-  system_.set_method(config.contact.method.value_or(ContactMethod::kPenalty),
-                     config.contact.velocity_step);
+  system_.set_velocity_step(config.contact.velocity_step);
   add_joints(config);
 
   // The starting layout: inside the domain, and no two bodies overlapping.
