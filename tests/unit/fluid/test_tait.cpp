@@ -46,5 +46,13 @@ TEST(Tait, NegativePressureClampedOrKept) {
   EXPECT_DOUBLE_EQ(clamped.density(-500), kept.density(-500));
 }
 
+// The density the model floors its particles at: the inverse's own bound, clamped or not.
+TEST(Tait, LowestDensityIsTheInversesBound) {
+  const TaitEquation kept(1000, 30, 7), clamped(1000, 30, 7, true);
+  EXPECT_DOUBLE_EQ(kept.lowest_density, 1000 * std::pow(1e-6, 1.0 / 7));
+  EXPECT_EQ(clamped.lowest_density, kept.lowest_density);
+  EXPECT_EQ(kept.lowest_density, kept.density(-kept.stiffness));
+}
+
 }  // namespace
 }  // namespace sluice

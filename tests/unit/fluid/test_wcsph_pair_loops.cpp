@@ -7,6 +7,7 @@
 // past the packed arrays, AddressSanitizer stops it (the asan build runs this test).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -74,7 +75,7 @@ struct Reference {
       }
       Vec3 g_wall = g;
       if (ps.body_point[w] >= 0) g_wall -= s.body_point_acceleration[ps.body_point[w]];
-      pressure[w] = weight > 0 ? (sum_p + g_wall.dot(rho_r)) / weight : 0;
+      pressure[w] = weight > 0 ? std::max((sum_p + g_wall.dot(rho_r)) / weight, eos.lowest) : 0;
       rho[w] = weight > 0 ? eos.density(pressure[w]) : eos.rho0;
       if (weight > 0) viscous[w] = 2 * to_3d<D>(ps.velocity[w]) - velocity / weight;
       wall_pressure[w] = pressure[w];

@@ -88,7 +88,9 @@ struct AdamiWall {
       }
       const Real hydrostatic =
           g_wall[0] * sums.rho_r[0] + g_wall[1] * sums.rho_r[1] + g_wall[2] * sums.rho_r[2];
-      const Real p = (sums.pressure + hydrostatic) / sums.weight;
+      // A fluid whose tension is clamped does not pull on its walls either.
+      const Real extrapolated = (sums.pressure + hydrostatic) / sums.weight;
+      const Real p = extrapolated > c.eos.lowest ? extrapolated : c.eos.lowest;
       f.pressure[w] = p;
       f.density[w] = c.eos.density(p);
       for (int a = 0; a < D; ++a) {

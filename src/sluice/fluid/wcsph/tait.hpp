@@ -1,5 +1,7 @@
 // Tait equation of state, p = B ((rho/rho0)^gamma - 1) with B = c0^2 rho0 / gamma
-// (Monaghan 1994; Batchelor 1967), optionally clamped from below at zero.
+// (Monaghan 1994; Batchelor 1967), optionally clamped from below at zero. Its inverse
+// bottoms out at rho0 1e-6^(1/gamma) (139 kg/m^3 for gamma = 7), and so do the model's
+// particles' densities (lowest_density).
 #pragma once
 
 #include <algorithm>
@@ -17,7 +19,8 @@ struct TaitEquation {
         c0(sound_speed),
         gamma(gamma),
         stiffness(sound_speed * sound_speed * rest_density / gamma),
-        lowest(clamp_negative ? Real(0) : -std::numeric_limits<Real>::infinity()) {}
+        lowest(clamp_negative ? Real(0) : -std::numeric_limits<Real>::infinity()),
+        lowest_density(density(-std::numeric_limits<Real>::infinity())) {}
 
   SLUICE_HOST_DEVICE Real pressure(Real rho) const {
     const Real ratio = rho / rho0;
@@ -40,6 +43,8 @@ struct TaitEquation {
 
   Real rho0, c0, gamma, stiffness;
   Real lowest;  // the lowest pressure the equation gives: 0 when negative pressure is clamped
+  // The lowest density the inverse gives (above), clamped or not.
+  Real lowest_density;
 };
 
 }  // namespace sluice

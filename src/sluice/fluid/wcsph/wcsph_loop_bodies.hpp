@@ -27,7 +27,12 @@ inline constexpr int kRatesRangeMultiple = 8;
 #endif
 
 // The second half kick of kick-drift-kick: velocity and density from their half-step values
-// with the rates, and the pressure of that density.
+// with the rates, and the pressure of that density. The density goes no lower than the equation
+// of state's inverse does (TaitEquation::lowest_density, 0.14 rho0): a particle whose neighbours
+// all fly off keeps little more than its own kernel's share of density by continuity (0.12 rho0
+// in 3D with the Wendland kernel at h = 1.5 dx), and the density diffusion between such spray
+// particles took some below zero; their volumes m / rho, which their neighbours' sums read, then
+// grew without bound (F3 at 0.015 m blew up at 0.885 s so).
 template <int D>
 SLUICE_HOST_DEVICE inline void wcsph_second_half_kick(const WcsphFields<D>& f, std::size_t i,
                                                       Real half_dt, const TaitEquation& eos) {
@@ -35,7 +40,8 @@ SLUICE_HOST_DEVICE inline void wcsph_second_half_kick(const WcsphFields<D>& f, s
     const std::size_t k = D * i + a;
     f.velocity[k] = f.half_velocity[k] + half_dt * f.acceleration[k];
   }
-  f.density[i] = f.half_density[i] + half_dt * f.density_rate[i];
+  const Real density = f.half_density[i] + half_dt * f.density_rate[i];
+  f.density[i] = density > eos.lowest_density ? density : eos.lowest_density;
   f.pressure[i] = eos.pressure(f.density[i]);
 }
 
