@@ -177,8 +177,13 @@ def main():
             run_model("fording", out, name, spacing, END, args, extra)
         keep_results(out, kept, ("loads.csv", "probes.csv"))
         results[(model, spacing)] = figures(out, kept)
-    # A table is written when every one of its runs has results (a run directory, or what
-    # keep_results kept in validation/results/); else it is left as it is.
+    # The tables hold every model at every spacing: the runs not asked for this time come from
+    # their run directories or kept results. A table is written when every one of its runs has
+    # results; else it is left as it is (a run of one model does not shrink it to one row).
+    for model, spacing in each_run(RUNS):
+        if (model, spacing) not in results:
+            results[(model, spacing)] = figures(run_dir(args, model, spacing),
+                                                f"fording/{model}_{spacing:g}")
     missing = [f"{m}@{s:g}" for (m, s), f in results.items() if f is None]
     if missing:
         sys.exit(f"fording_convergence.py: no results for {', '.join(missing)}: tables and plot "

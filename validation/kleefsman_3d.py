@@ -177,19 +177,28 @@ def main():
     if args.variants:
         args.out += "_variants"
     experiment = f3.experiment()
-    results = {}
-    for model, spacing in each_run(runs):
+
+    def result(model, spacing, run):
+        """The run's probes, span and wall time per simulated second, from its directory or
+        what keep_results kept (running it first where `run`)."""
         out = run_dir(args, model, spacing)
         name = f"kleefsman_3d{'_variants' if args.variants else ''}/{model}_{spacing:g}"
-        if not args.no_run:
+        if run:
             run_model("kleefsman_3d", out, model, spacing, end, args)
         keep_results(out, name)
         path = result_path(out, name, "probes.csv")
         series = f3.read_probes(path) if path else None
         span = (0.0, min(end, float(series["time"][-1]))) if series is not None else (0.0, end)
         statistics = result_statistics(out, name)
-        results[(model, spacing)] = (series, span,
-                                     statistics and statistics["wall_per_simulated_second"])
+        return series, span, statistics and statistics["wall_per_simulated_second"]
+
+    results = {key: result(*key, not args.no_run) for key in each_run(runs)}
+    if not args.variants:
+        # The groups' tables hold every run of RUNS: those not asked for this time come from
+        # their directories or kept results, so that a run of one model cannot shrink a table.
+        for key in each_run(RUNS):
+            if key not in results:
+                results[key] = result(*key, False)
 
     if args.variants:
         write_table("validation.md", "f3-variants", table(results, experiment, end))

@@ -15,6 +15,11 @@ using Vec = Eigen::Matrix<Real, D, 1>;
 
 using Vec3 = Eigen::Matrix<Real, 3, 1>;
 
+// A body's velocity (linear, then angular) or an impulse on it (force, then moment), and the
+// 6 x 6 maps between them (world).
+using Vec6 = Eigen::Matrix<Real, 6, 1>;
+using Mat6 = Eigen::Matrix<Real, 6, 6>;
+
 // Index of the "up" axis (against gravity in every shipped case) in a D-dimensional vector.
 template <int D>
 inline constexpr int kUpAxis = D - 1;

@@ -4,6 +4,7 @@
 // each body and to the walls. The case's bodies implement it (sim/rigid_bodies.hpp).
 #pragma once
 
+#include <Eigen/Dense>
 #include <vector>
 
 #include "sluice/coupling/body_motion.hpp"
@@ -48,6 +49,19 @@ class BodyGeometry {
   virtual SurfacePoint nearest_on_walls(const Vec3& x) const = 0;
   // Body b's mobility now (immobile unless the bodies say otherwise).
   virtual BodyMobility mobility(std::size_t /*b*/) const { return {}; }
+  // The bodies' mobility together, 6 rows and columns per body (linear, then angular; world),
+  // with the joints between them kept (rigid/joined_mobility.hpp); without joints, each
+  // body's mobility() on the diagonal.
+  virtual Eigen::MatrixXd joined_mobility() const {
+    const auto n = static_cast<Eigen::Index>(body_count());
+    Eigen::MatrixXd w = Eigen::MatrixXd::Zero(6 * n, 6 * n);
+    for (Eigen::Index b = 0; b < n; ++b) {
+      const BodyMobility m = mobility(static_cast<std::size_t>(b));
+      w.block<3, 3>(6 * b, 6 * b) = m.inverse_mass;
+      w.block<3, 3>(6 * b + 3, 6 * b + 3) = m.inverse_inertia;
+    }
+    return w;
+  }
 };
 
 }  // namespace sluice

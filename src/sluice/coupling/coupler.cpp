@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sluice/rigid/rigid_integrator.hpp"
+
 namespace sluice {
 
 Coupler::Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* fluid, bool subcycling,
@@ -17,6 +19,7 @@ Coupler::Coupler(MultibodySystem& system, std::size_t bodies, FluidExchange* flu
       fluid_force_(bodies, Vec3::Zero()),
       fluid_moment_(bodies, Vec3::Zero()) {
   update_motion(0);
+  if (fluid_ && scheme_->fluid_solves_body_velocities()) fluid_->solve_body_velocities();
 }
 
 TimeStep Coupler::time_step(TimeStep fluid) {
@@ -52,16 +55,59 @@ int Coupler::exchanges(double dt) const {
   return static_cast<int>(std::ceil(dt * std::sqrt(stiffness / lightest) / kExchangeAngle - 1e-9));
 }
 
-int Coupler::exchange(double h, bool in_solve) {
+int Coupler::exchange(double h, FluidLoads loads) {
   // In the solve, the fluid acts through it; its loads are for the output only.
-  const int substeps = in_solve && fluid_ ? system_.advance(h, {}, {}, fluid_)
-                                          : system_.advance(h, fluid_force_, fluid_moment_);
+  int substeps = 0;
+  if (loads == FluidLoads::kInSolve && fluid_) {
+    substeps = system_.advance(h, {}, {}, fluid_);
+  } else if (loads == FluidLoads::kLeftOut) {
+    substeps = system_.advance(h);
+  } else {
+    substeps = system_.advance(h, fluid_force_, fluid_moment_);
+  }
   update_motion(h);
   if (fluid_) {
     fluid_->receive_body_motion(motion_);
     fluid_->advance_with_bodies(h);
   }
   return substeps;
+}
+
+void Coupler::take_solved_velocities(double dt) {
+  const std::vector<Vec6> solved = fluid_->solved_body_velocities();
+  if (solved.size() != bodies_) return;
+  for (std::size_t b = 0; b < bodies_; ++b) {
+    SystemBody& body = system_.bodies()[b];
+    if (body.fixed) continue;
+    RigidBody& s = body.state;
+    const Vec3 velocity = solved[b].head<3>(), angular_velocity = solved[b].tail<3>();
+    const Vec3 change = velocity - s.velocity;
+    const Vec3 angular_change = angular_velocity - s.angular_velocity();
+    // The bodies drifted over the step without the fluid's impulse. Its part of the drift, as
+    // the kick-drift-kick step gives a load held over the step (h^2 F / 2m: half the velocity
+    // it adds, over the step), so that a body the water holds at rest stays where the water
+    // held it; without it the body sinks by g h^2 / 2 a step and the water it displaces is lost
+    // at its faces.
+    RigidBody shifted = s;
+    shifted.velocity = 0.5 * change;
+    shifted.angular_momentum = s.world_inertia() * (0.5 * angular_change);
+    drift(shifted, dt);
+    s.position = shifted.position;
+    s.orientation = shifted.orientation;
+    s.velocity = velocity;
+    s.angular_momentum = s.world_inertia() * angular_velocity;
+    s.enforce_locks();
+    BodyKinematics& m = motion_[b];
+    // The accelerations over the step: the advance's and the fluid's change together.
+    if (dt > 0) {
+      m.acceleration += change / dt;
+      m.angular_acceleration += angular_change / dt;
+    }
+    m.position = s.position;
+    m.orientation = s.orientation;
+    m.velocity = s.velocity;
+    m.angular_velocity = s.angular_velocity();
+  }
 }
 
 void Coupler::collect_loads() {

@@ -16,6 +16,11 @@
 
 namespace sluice {
 
+// What the bodies' advance in an exchange does with the fluid's loads: holds the last ones
+// (co-simulation), has the fluid in its solve (monolithic), or leaves them out (the fluid
+// gives the bodies its solved velocities after its own stages: projection).
+enum class FluidLoads { kHeld, kInSolve, kLeftOut };
+
 class Coupler {
  public:
   // The first `bodies` bodies of `system` are the case's bodies (the rest are walls); `fluid`
@@ -40,10 +45,14 @@ class Coupler {
   // Takes the fluid's loads on the bodies, to hold over the next advance.
   void collect_loads();
 
-  // The schemes' exchange: advances the bodies by h, with the held loads or (in_solve) with
-  // the fluid in their solve, then hands the fluid their motion and lets a fluid that moves
-  // with them do so. Returns the solid sub-steps it took.
-  int exchange(double h, bool in_solve);
+  // The schemes' exchange: advances the bodies by h, with the fluid's loads as `loads` says,
+  // then hands the fluid their motion and lets a fluid that moves with them do so. Returns the
+  // solid sub-steps it took.
+  int exchange(double h, FluidLoads loads);
+  // The projection scheme, after the fluid's stages of a step of dt: each free body takes the
+  // velocity the fluid solved (FluidExchange::solved_body_velocities), and the motion handed
+  // on (its accelerations) includes the change.
+  void take_solved_velocities(double dt);
   // A step took `substeps` solid sub-steps in `exchanges` exchanges (the statistics).
   void record_step(int substeps, int exchanges) {
     most_substeps_ = std::max(most_substeps_, substeps);

@@ -13,6 +13,12 @@
 //                     or with bodies and contacts of its own (rigid/ccp_participant.hpp); its
 //                     loads are reported, not held. It runs the bodies' solve even in a case
 //                     without bodies (a granular fluid's spheres move in it).
+//   projection        a fluid that solves the bodies' velocities with its pressure (the grid's
+//                     projection; Batty, Bertails & Bridson 2007): the bodies advance without
+//                     the fluid's loads (gravity, contacts, joints), the fluid's pressure solve
+//                     takes their velocities as unknowns through their joined mobility (joints
+//                     kept), and the bodies take the velocities it solved in the same step; its
+//                     loads are reported, not held.
 #pragma once
 
 #include <memory>
@@ -34,10 +40,13 @@ class CouplingScheme {
   virtual void advance(Coupler& coupler, double dt) const = 0;
   // Whether the step runs the bodies' solve in a case without bodies.
   virtual bool solves_without_bodies() const { return false; }
+  // Whether the fluid solves the bodies' velocities, which they take after its stages.
+  virtual bool fluid_solves_body_velocities() const { return false; }
 
   // The step's stages in order: the fluid's before the bodies, the bodies' advance (where the
-  // case has bodies, or the scheme solves without them), the fluid's after, and the loads
-  // taken back for the next step (where a fluid acts on bodies: taken once now, too).
+  // case has bodies, or the scheme solves without them), the fluid's after, the velocities the
+  // fluid solved given to the bodies (projection), and the loads taken back for the next step
+  // (where a fluid acts on bodies: taken once now, too).
   StageList assemble_step(StageList before_bodies, StageList after_bodies, Coupler& coupler,
                           bool has_bodies, bool has_fluid) const;
 };

@@ -1,5 +1,6 @@
 // What the coupler exchanges with a fluid, whatever its discretisation: the bodies' motion in,
-// the fluid's force and moment on each body out, and, in the monolithic scheme, constraints.
+// the fluid's force and moment on each body out, and, in the monolithic scheme, constraints; in
+// the projection scheme, the bodies' velocities the fluid solved.
 #pragma once
 
 #include <vector>
@@ -27,6 +28,15 @@ class FluidExchange : public CcpParticipant {
   // evaluation. Monolithic: what its constraints exerted over the last step, for the output
   // only (the solve applied it).
   virtual std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const = 0;
+
+  // The projection scheme: the bodies advance without the fluid's loads, and the fluid solves
+  // their velocities with its pressure, through their joined mobility
+  // (BodyGeometry::joined_mobility). The coupler of that scheme calls this once, before the
+  // first step; a fluid that cannot is not offered the scheme (its registry entry).
+  virtual void solve_body_velocities() {}
+  // Then, after each step's pressure solve: each body's velocity (linear, then angular) as
+  // the fluid solved it, to give the body; empty before the first solve.
+  virtual std::vector<Vec6> solved_body_velocities() const { return {}; }
 };
 
 }  // namespace sluice

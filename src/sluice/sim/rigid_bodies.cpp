@@ -9,6 +9,7 @@
 
 #include "sluice/contact/contact_body_builder.hpp"
 #include "sluice/core/errors.hpp"
+#include "sluice/rigid/joined_mobility.hpp"
 #include "sluice/sim/body_shapes.hpp"
 #include "sluice/sim/prescribed_motion.hpp"
 
@@ -240,6 +241,21 @@ BodyMobility RigidBodies::mobility(std::size_t b) const {
   // each other: 50 J). Held by a contact, a body is immobile to the fluid for that step.
   if (system_.contact_force()[b].norm() > 0) return {};
   return m;
+}
+
+Eigen::MatrixXd RigidBodies::joined_mobility() const {
+  std::vector<Mat6> own(count(), Mat6::Zero());
+  for (std::size_t b = 0; b < count(); ++b) {
+    const BodyMobility m = mobility(b);
+    own[b].topLeftCorner<3, 3>() = m.inverse_mass;
+    own[b].bottomRightCorner<3, 3>() = m.inverse_inertia;
+  }
+  // The rows' Jacobian does not depend on the step (h = 1) nor on the drift taken back (0).
+  RowGroup rows;
+  for (const Joint& joint : system_.rigid().joints()) {
+    add_joint_rows(joint, system_.bodies(), 1.0, 0.0, rows);
+  }
+  return sluice::joined_mobility(own, rows);
 }
 
 std::vector<BodyPoint> RigidBodies::points_under_surface(int layers) const {

@@ -32,6 +32,10 @@ ModelEntry mac_entry() {
   entry.size.bytes_per_element = 400;  // measured: docs/output.md
   entry.size.element_name = "cells";
   entry.size.elements = grid_cells;
+  // Its pressure solves the bodies' velocities (Batty et al. 2007); in the projection scheme the
+  // bodies take them, joints kept. Held loads stay the default: a body held by a contact is
+  // immobile to the projection, and its load is then lost (docs/architecture.md, Projection).
+  entry.schemes = {"held-loads", "projection"};
   return entry;
 }
 

@@ -151,7 +151,7 @@ void MacModel<D>::project(double dt, bool moving) {
     bodies[b].centre = m.position;
     bodies[b].velocity.head<3>() = m.velocity;
     bodies[b].velocity.tail<3>() = m.angular_velocity;
-    if (!moving) continue;
+    if (!moving || solves_body_velocities_) continue;
     const BodyMobility mobility = geometry_.mobility(b);
     bodies[b].mobility.topLeftCorner<3, 3>() = mobility.inverse_mass;
     bodies[b].mobility.bottomRightCorner<3, 3>() = mobility.inverse_inertia;
@@ -162,11 +162,16 @@ void MacModel<D>::project(double dt, bool moving) {
     last.tail<3>() = loads_[b].moment;
     bodies[b].velocity -= dt * bodies[b].mobility * last;
   }
-  last_projection_ = projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_,
-                                         now_.u, now_.pressure, valid_, bodies);
+  const bool joined = moving && solves_body_velocities_ && !bodies.empty();
+  const Eigen::MatrixXd mobility = joined ? geometry_.joined_mobility() : Eigen::MatrixXd();
+  last_projection_ =
+      projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_, now_.u,
+                          now_.pressure, valid_, bodies, joined ? &mobility : nullptr);
+  solved_velocities_.clear();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     loads_[b].force = bodies[b].load.head<3>();
     loads_[b].moment = bodies[b].load.tail<3>();
+    if (joined) solved_velocities_.push_back(bodies[b].velocity);
   }
   projections_ += 1;
   pressure_iterations_ += last_projection_.iterations;

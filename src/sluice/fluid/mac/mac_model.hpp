@@ -3,7 +3,8 @@
 // advect the level set and the velocity (MacCormack), correct the level set by its marker
 // particles and reinitialise it, add gravity and viscosity, place the bodies, project, and
 // extend the velocity into the air. A free body's velocity is solved with the pressure, and its
-// load is the pressure on its cut faces.
+// load is the pressure on its cut faces; coupled by the projection scheme, the bodies take that
+// velocity (coupling/coupling_scheme.hpp).
 #pragma once
 
 #include <memory>
@@ -32,6 +33,8 @@ class MacModel : public FluidSystem {
   TimeStep next_time_step() const override;
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override;
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override;
+  void solve_body_velocities() override { solves_body_velocities_ = true; }
+  std::vector<Vec6> solved_body_velocities() const override { return solved_velocities_; }
 
   io::FluidFrame frame() const override { return frame_of(surface_.phi(), now_); }
   double pressure_at(const Vec3& x) const override;
@@ -66,8 +69,10 @@ class MacModel : public FluidSystem {
 
   void advect(double dt);
   void add_forces(double dt);
-  // `moving`: the bodies' velocities are unknowns of the projection (with their loads of the
-  // last step taken out of them); else the bodies hold still.
+  // `moving`: the bodies' velocities are unknowns of the projection; else the bodies hold
+  // still. Coupled by held loads, the bodies advanced with the last step's loads, which are
+  // taken out of their velocities first; in the projection scheme they advanced without them,
+  // and answer through their joined mobility.
   void project(double dt, bool moving = true);
   void extend();
   io::FluidFrame frame_of(const CellField& phi, const Fields& f) const;
@@ -86,7 +91,9 @@ class MacModel : public FluidSystem {
   PressureProjection<D> projection_;
   FreeSurface<D> surface_;
   std::vector<BodyKinematics> motion_;
-  std::vector<Wrench> loads_;  // the pressure's on each body, from the last projection
+  std::vector<Wrench> loads_;            // the pressure's on each body, from the last projection
+  bool solves_body_velocities_ = false;  // the projection scheme
+  std::vector<Vec6> solved_velocities_;  // the bodies', from the last projection (that scheme)
   Fields now_;
   FaceMarks<D> valid_;
   Fields last_good_;

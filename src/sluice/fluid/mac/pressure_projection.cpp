@@ -28,7 +28,8 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
                                                 const SolidFaces<D>& solid, Real dt, Real density,
                                                 FaceField<D>& u, CellField& pressure,
                                                 FaceMarks<D>& valid,
-                                                std::vector<ProjectedBody>& bodies) {
+                                                std::vector<ProjectedBody>& bodies,
+                                                const Eigen::MatrixXd* joined) {
   const Lattice<D> cells = grid.cell_lattice();
   const std::size_t n = cells.size();
   std::array<Lattice<D>, D> faces;
@@ -168,8 +169,12 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
   g.setFromTriplets(coupling.begin(), coupling.end());
   const double cell_mass = density * std::pow(grid.h, D);
   Eigen::MatrixXd w = Eigen::MatrixXd::Zero(columns, columns);
-  for (std::size_t b = 0; b < bodies.size(); ++b)
-    w.block<6, 6>(6 * b, 6 * b) = cell_mass * bodies[b].mobility;
+  if (joined) {
+    w = cell_mass * *joined;
+  } else {
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      w.block<6, 6>(6 * b, 6 * b) = cell_mass * bodies[b].mobility;
+  }
   // The free directions that the water touches; no room for the others (a grid's worth each).
   std::vector<int> free;
   for (int c = 0; c < columns; ++c)
@@ -186,9 +191,15 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
     x -= y * s.partialPivLu().solve(w * (g.transpose() * x));
   }
   const Eigen::VectorXd impulse = g.transpose() * x;  // per body: G_b^T q
+  const Eigen::VectorXd joined_change =
+      joined ? Eigen::VectorXd(w * impulse) : Eigen::VectorXd();  // every body's, joints kept
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Vec6 gq = impulse.segment<6>(6 * b);
-    bodies[b].velocity += cell_mass * bodies[b].mobility * gq;
+    if (joined) {
+      bodies[b].velocity += joined_change.segment<6>(6 * b);
+    } else {
+      bodies[b].velocity += cell_mass * bodies[b].mobility * gq;
+    }
     bodies[b].load = (cell_mass / dt) * gq;
   }
 

@@ -25,9 +25,6 @@ struct SolidFaces {
   std::array<std::vector<int>, D> body;  // the body whose velocity a face has, or -1
 };
 
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-
 // A body in the projection: its velocity (linear, angular) is an unknown of the pressure
 // problem, so that the pressure that keeps the water divergence-free is the one that also
 // accelerates the body (Batty, Bertails & Bridson 2007): the added mass is in the solve, and a
@@ -55,10 +52,13 @@ class PressureProjection {
   // pressure of every water cell (0 elsewhere) and `valid` marks the faces set here (beside
   // a water cell, or closed by a solid). Water cells are those with phi < 0 and a face open.
   // The faces of `bodies` (solid.body) move with the bodies' velocities, solved for with the
-  // pressure where a body is mobile; each body's load is the pressure's force on it.
+  // pressure where a body is mobile; each body's load is the pressure's force on it. With
+  // `joined` (6 rows and columns per body: BodyGeometry::joined_mobility), the bodies answer
+  // the pressure through it, joints kept, and their own `mobility` is not read.
   ProjectionReport project(const MacGrid<D>& grid, const CellField& phi, const SolidFaces<D>& solid,
                            Real dt, Real density, FaceField<D>& u, CellField& pressure,
-                           FaceMarks<D>& valid, std::vector<ProjectedBody>& bodies);
+                           FaceMarks<D>& valid, std::vector<ProjectedBody>& bodies,
+                           const Eigen::MatrixXd* joined = nullptr);
 
   // Checkpoints: the warm start.
   void archive_state(StateArchive& a) { a(last_solution_); }
