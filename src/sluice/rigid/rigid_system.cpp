@@ -188,7 +188,7 @@ RigidSystemEnergy RigidSystem::energy() const {
     e.kinetic += body.state.kinetic_energy();
     e.potential -= body.state.mass * gravity_.dot(body.state.position);
   }
-  e.elastic = interaction_ && !complementarity() ? interaction_->stored_energy() : 0;
+  e.elastic = interaction_ ? interaction_->stored_energy() : 0;  // cones store none
   return e;
 }
 
