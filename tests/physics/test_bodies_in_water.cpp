@@ -65,7 +65,7 @@ TEST(CaseHertzImpact, ContactTimeAndPeakOverlap) {
 // 3 h = A + 1 d and d = h - (z - 0.5). The mean is taken over the last 4 s of the 6 s run.
 testing::FloatingBoxDraft testing::floating_box_draft(const std::vector<std::string>& overrides) {
   Simulation<2> sim(testing::load_case("floating_box_2d.yaml", overrides));
-  const double area = sim.fluid().energy().mass / sim.config().fluid.density;
+  const double area = sim.fluid().observation().energy().mass / sim.config().fluid.density;
   const double x0 = sim.bodies().state(0).position[0];
   double sum = 0, drift = 0;
   long samples = 0;

@@ -34,10 +34,10 @@ testing::DamBreakFront testing::dam_break_front(const std::vector<std::string>& 
   io::ProbeConfig front;
   front.kind = io::ProbeKind::kSurgeFront;
   Probes probe({front}, "");
-  std::vector<double> times{0}, fronts{probe.measure(sim.fluid())[0]};
+  std::vector<double> times{0}, fronts{probe.measure(sim.fluid().observation())[0]};
   testing::run_until(sim, 0.72, [&](const StepClock& s) {
     times.push_back(s.time);
-    fronts.push_back(probe.measure(sim.fluid())[0]);
+    fronts.push_back(probe.measure(sim.fluid().observation())[0]);
   });
   // The run's front at the experiment's time t read on a clock started `delay` later.
   auto rms_with_delay = [&](double delay) {

@@ -37,7 +37,7 @@ double wall_lift(const Simulation<D>& sim) {
 // A pool at rest presses on the floor with its weight, within 1 % (mean over the last 0.5 s).
 TEST(Granular, PoolAtRestPressesWithItsWeight) {
   Simulation<2> sim(load_case("granular_pool_2d.yaml", {"end_time=1.0"}));
-  const double weight = sim.fluid().energy().mass * 9.81;
+  const double weight = sim.fluid().observation().energy().mass * 9.81;
   double impulse = 0, duration = 0;
   run_until(sim, 1.0, [&](const StepClock& c) {
     if (c.time <= 0.5) return;

@@ -34,7 +34,7 @@ TEST(HydrostaticTank2D, PressureAndRestAfterTwoSeconds) {
   level.kind = io::ProbeKind::kWaterHeight;
   level.point = Vec3(0.5, 0, 0);
   Probes probe({bottom, level}, "");
-  const auto measured = probe.measure(sim.fluid());
+  const auto measured = probe.measure(sim.fluid().observation());
   const double p_bottom = measured[0];
   using testing::Bound;
   testing::expect_figure({"F1 bottom pressure against rho g H", "%", 2},
@@ -83,7 +83,7 @@ TEST(HydrostaticTank2D, MpsBottomPressureAveragedOverATenthOfASecond) {
   long samples = 0;
   testing::run_until(sim, 2.0, [&](const StepClock& c) {
     if (c.time <= 1.9) return;
-    const double p = probe.measure(sim.fluid())[0];
+    const double p = probe.measure(sim.fluid().observation())[0];
     sum += p;
     sum2 += p * p;
     ++samples;

@@ -45,7 +45,7 @@ testing::Series run_case(const std::string& model) {
   testing::Series out;
   auto record = [&] {
     out["time"].push_back(sim.time());
-    const std::vector<double> row = probes.measure(sim.fluid());
+    const std::vector<double> row = probes.measure(sim.fluid().observation());
     for (std::size_t k = 0; k < row.size(); ++k) {
       out[names[k].substr(0, names[k].find(' '))].push_back(row[k]);
     }

@@ -59,7 +59,7 @@ TEST(MacFluid, StillTankKeepsHydrostaticPressureAndRest) {
     const double z = cells.position(cells.coordinates(k))[1];
     worst = std::max(worst, std::abs(model.pressure()[k] - rho * g * (depth - z)));
   }
-  const double bottom = sim.fluid().pressure_at(Vec3(0.5, 0, 0));
+  const double bottom = sim.fluid().observation().pressure_at(Vec3(0.5, 0, 0));
   std::printf(
       "F1 mac: %zu water cells, largest pressure error %.3g Pa (%.2g of rho g H), floor "
       "probe %.6g Pa, largest speed %.3g m/s (bar %.3g)\n",

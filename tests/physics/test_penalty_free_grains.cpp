@@ -23,7 +23,7 @@ TEST(PenaltySphFreeGrains, BedCarriesTheWaterAndTheFloorCarriesBoth) {
   ASSERT_EQ(grains, 20u);
   double bed_weight = 0;
   for (std::size_t b = 0; b < grains; ++b) bed_weight += sim.bodies().state(b).mass * 9.81;
-  const double water_weight = sim.fluid().energy().mass * 9.81;
+  const double water_weight = sim.fluid().observation().energy().mass * 9.81;
   double fluid_load = 0, floor_load = 0;
   long samples = 0;
   testing::run_until(sim, 2.0, [&](const StepClock& c) {
@@ -44,7 +44,7 @@ TEST(PenaltySphFreeGrains, BedCarriesTheWaterAndTheFloorCarriesBoth) {
       bed_weight + water_weight, 100 * (floor_load / (bed_weight + water_weight) - 1));
   EXPECT_NEAR(-fluid_load, water_weight, 0.03 * water_weight);
   EXPECT_NEAR(floor_load, bed_weight + water_weight, 0.03 * (bed_weight + water_weight));
-  for (const auto& [name, value] : sim.fluid().counters()) {
+  for (const auto& [name, value] : sim.fluid().observation().counters()) {
     if (name == "held_back_fraction") {
       EXPECT_EQ(value, 1);
     }

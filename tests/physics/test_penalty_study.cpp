@@ -54,14 +54,14 @@ model:
 )",
                                        kSpacing, stiffness, 0.03 + 1.5 * ratio * kSpacing, ratio);
   Simulation<3> sim(io::parse_case(text, "penalty_study.yaml"));
-  const double mass = sim.fluid().energy().mass;
+  const double mass = sim.fluid().observation().energy().mass;
   testing::run_until(sim, 0.1, [](const StepClock&) {});
   Outcome out;
-  for (const auto& [name, value] : sim.fluid().counters()) {
+  for (const auto& [name, value] : sim.fluid().observation().counters()) {
     if (name == "held_back_fraction") out.held_back = value;
     if (name == "peak_boundary_force") out.peak_force = value;
   }
-  out.mass_change = sim.fluid().energy().mass - mass;
+  out.mass_change = sim.fluid().observation().energy().mass - mass;
   return out;
 }
 
@@ -128,7 +128,7 @@ model:
   surface_tension: 0
 )";
   Simulation<2> sim(io::parse_case(text, "water_on_a_box.yaml"));
-  const double weight = sim.fluid().energy().mass * 9.81;
+  const double weight = sim.fluid().observation().energy().mass * 9.81;
   double sum = 0;
   long samples = 0;
   testing::run_until(sim, 1.0, [&](const StepClock& c) {

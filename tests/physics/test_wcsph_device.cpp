@@ -43,11 +43,11 @@ RunEnd<D> run_to(const io::CaseConfig& config, double end,
   testing::run_until(sim, end, [&](const StepClock&) {
     ++out.steps;
     if (!after_each_step) return;
-    sim.fluid().frame();  // the device's copy comes back first, as below
+    sim.fluid().observation().view();  // the device's copy comes back first, as below
     after_each_step(testing::particle_state(sim).particles);
   });
-  out.energy = sim.fluid().energy();  // on a device, summed there
-  sim.fluid().frame();                // a reader of the particles: the device's copy comes back
+  out.energy = sim.fluid().observation().energy();  // on a device, summed there
+  sim.fluid().observation().view();  // a reader of the particles: the device's copy comes back
   const auto& ps = testing::particle_state(sim).particles;
   out.position = ps.position;
   out.velocity = ps.velocity;
@@ -198,7 +198,7 @@ double tank_bottom_pressure(const std::vector<std::string>& overrides) {
   io::ProbeConfig bottom;
   bottom.kind = io::ProbeKind::kPressure;
   bottom.point = Vec3(0.5, 0, 0);
-  return Probes({bottom}, "").measure(sim.fluid())[0];
+  return Probes({bottom}, "").measure(sim.fluid().observation())[0];
 }
 
 TEST(WcsphGpu, StillTankAgreesWithTheCpu) {
@@ -242,8 +242,8 @@ BenchEnd bench_end(const std::vector<std::string>& device) {
   overrides.insert(overrides.end(), device.begin(), device.end());
   Simulation<3> sim(testing::load_case("bench_dam_break_3d.yaml", overrides));
   testing::run_until(sim, 0.3, [](const StepClock&) {});
-  const FluidEnergy e = sim.fluid().energy();
-  return {sim.fluid().surge_front(0), e.kinetic, e.potential};
+  const FluidEnergy e = sim.fluid().observation().energy();
+  return {sim.fluid().observation().surge_front(0), e.kinetic, e.potential};
 }
 
 TEST(WcsphGpu, BenchCaseFrontAndEnergyAgreeWithTheCpu) {

@@ -47,7 +47,7 @@ FluidEnergyShare<D> energy_share(const ParticleSet<D>& ps, const Vec<D>& gravity
 
 template <int D>
 ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_radius,
-                                const BodyGeometry& bodies)
+                                const BodyGeometry& bodies, Walls wall_kind)
     : radius_(interaction_radius),
       // Within the walls' particle layers, a fluid particle is put back on their surface.
       wall_surfaces_(config.walls, D,
@@ -116,8 +116,12 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
                      "the fluid blocks yield no fluid particle (too small for the spacing, or "
                      "inside walls)");
   }
-  for (const auto& w : walls) {
-    s.particles.add(w, Vec<D>::Zero(), config.fluid.density, mass, ParticleKind::kWall);
+  // With the walls' surfaces alone, the walls were sampled all the same: those points kept the
+  // fluid out of the walls and spanned the neighbour grid.
+  if (wall_kind == Walls::kParticleLayers) {
+    for (const auto& w : walls) {
+      s.particles.add(w, Vec<D>::Zero(), config.fluid.density, mass, ParticleKind::kWall);
+    }
   }
   const std::vector<BodyKinematics> motion = bodies.motion();
   for (std::size_t k = 0; k < body_points_.size(); ++k) {

@@ -32,13 +32,22 @@ inline int wall_layers(Real interaction_radius, Real dx) {
 }
 
 template <int D>
-class ParticleFluid : public FluidSystem {
+class ParticleFluid : public FluidSystem,
+                      public FluidExchange,
+                      public FluidObservation,
+                      public FluidGuard {
  public:
+  // How the model's fluid meets the case's walls: through layers of wall particles as thick as
+  // its support, or through the walls' surfaces alone (a granular fluid's spheres), with no
+  // wall particle.
+  enum class Walls { kParticleLayers, kSurfacesOnly };
+
   // Builds the particles, sorted by cell: fluid (none inside walls or bodies), walls, and the
   // bodies' particles (with `interaction_radius` > 0, layers under each body's surface; else
   // its surface particles, for a case of bodies alone). Throws InputError when the case has
   // fluid blocks but no fluid particle remains.
-  ParticleFluid(const io::CaseConfig& config, Real interaction_radius, const BodyGeometry& bodies);
+  ParticleFluid(const io::CaseConfig& config, Real interaction_radius, const BodyGeometry& bodies,
+                Walls walls = Walls::kParticleLayers);
 
   ParticleState<D>& state() { return state_; }
   const ParticleState<D>& state() const { return state_; }
@@ -62,16 +71,20 @@ class ParticleFluid : public FluidSystem {
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override;
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override;
 
-  io::FluidFrame frame() const override {
+  FluidExchange& exchange() override { return *this; }
+  const FluidObservation& observation() const override { return *this; }
+  FluidGuard& guard() override { return *this; }
+
+  FluidView view() const override {
     refresh_host();
-    return {frame_of(state_.particles), {}};
+    return view_of(state_.particles);
   }
   double pressure_at(const Vec3& x) const override;
   double water_height_at(const Vec3& gauge) const override;
   double surge_front(int axis) const override;
   std::optional<std::string> check(const StepClock& clock) const override;
   void remember_good(double time) override;
-  io::FluidFrame last_good_frame() const override;
+  FluidView last_good_view() const override;
   double last_good_time() const override { return last_good_time_; }
   FluidSize size() const override;
   FluidEnergy energy() const override;  // kinetic, potential and mass of the fluid
@@ -128,7 +141,7 @@ class ParticleFluid : public FluidSystem {
   // The neighbours stage: puts back fluid found in a wall's layers, then sorts the particle
   // set by cell.
   virtual void sort_by_cell();
-  io::PolyFrame frame_of(const ParticleSet<D>& particles) const;
+  FluidView view_of(const ParticleSet<D>& particles) const;
   // What the particle base's services need to run on a device (particle_device_run.hpp): the
   // cells, the body points, the walls, the escape box and the carried velocity's field.
   ParticleDeviceSetup<D> device_setup() const;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <type_traits>
 
 #include "sluice/core/errors.hpp"
@@ -12,46 +13,32 @@
 
 namespace sluice {
 
-// The particles as points, with every field marked for output as Float32 (vectors in 3D) or
-// Int32, and the body of each body particle.
+// The particles as points with every field marked for output, viewed where the set keeps it,
+// and the body of each body particle.
 template <int D>
-io::PolyFrame ParticleFluid<D>::frame_of(const ParticleSet<D>& ps) const {
+FluidView ParticleFluid<D>::view_of(const ParticleSet<D>& ps) const {
   const std::size_t n = ps.size();
-  io::PolyFrame frame;
-  frame.points.resize(3 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x = to_3d<D>(ps.position[i]);
-    for (int a = 0; a < 3; ++a) frame.points[3 * i + a] = static_cast<float>(x[a]);
-  }
+  FluidView view;
+  view.positions = FieldView::of("position", D, n ? ps.position.front().data() : nullptr, n);
   ps.for_each_field([&](const FieldLabel& label, const auto& values) {
     if (!label.output) return;
-    using T = typename std::decay_t<decltype(values)>::value_type;
-    if constexpr (std::is_same_v<T, Vec<D>>) {
-      io::PointArrayF32 array{label.name, 3, std::vector<float>(3 * n)};
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec3 v = to_3d<D>(values[i]);
-        for (int a = 0; a < 3; ++a) array.values[3 * i + a] = static_cast<float>(v[a]);
-      }
-      frame.float_arrays.push_back(std::move(array));
-    } else if constexpr (std::is_floating_point_v<T>) {
-      io::PointArrayF32 array{label.name, 1, std::vector<float>(n)};
-      for (std::size_t i = 0; i < n; ++i) array.values[i] = static_cast<float>(values[i]);
-      frame.float_arrays.push_back(std::move(array));
+    using Components = FieldComponents<typename std::decay_t<decltype(values)>::value_type>;
+    const auto* first = reinterpret_cast<const typename Components::type*>(values.data());
+    if constexpr (std::is_same_v<typename Components::type, std::int32_t>) {
+      view.fields.push_back(FieldView::of(label.name, first, n));
     } else {
-      io::PointArrayI32 array{label.name, std::vector<std::int32_t>(n)};
-      for (std::size_t i = 0; i < n; ++i) array.values[i] = static_cast<std::int32_t>(values[i]);
-      frame.int_arrays.push_back(std::move(array));
+      view.fields.push_back(FieldView::of(label.name, Components::width, first, n));
     }
   });
   if (body_count_ > 0) {
-    io::PointArrayI32 body{"body", std::vector<std::int32_t>(n)};
+    std::vector<std::int32_t> body(n);
     for (std::size_t i = 0; i < n; ++i) {
       const std::int32_t k = ps.body_point[i];
-      body.values[i] = k < 0 ? -1 : static_cast<std::int32_t>(body_points_[k].body);
+      body[i] = k < 0 ? -1 : static_cast<std::int32_t>(body_points_[k].body);
     }
-    frame.int_arrays.push_back(std::move(body));
+    view.fields.push_back(FieldView::holding("body", std::move(body)));
   }
-  return frame;
+  return view;
 }
 
 namespace {
@@ -107,22 +94,25 @@ void ParticleFluid<D>::remember_good(double time) {
   last_good_.assign_fields(state_.particles, shown_in_frames);
 }
 
+// On a device the last good state is there: the view holds the host's copy of it.
 template <int D>
-io::FluidFrame ParticleFluid<D>::last_good_frame() const {
-  if (!device_) return {frame_of(last_good_), {}};
-  ParticleSet<D> good = state_.particles;
-  device_->download_remembered(good);
-  return {frame_of(good), {}};
+FluidView ParticleFluid<D>::last_good_view() const {
+  if (!device_) return view_of(last_good_);
+  auto good = std::make_shared<ParticleSet<D>>(state_.particles);
+  device_->download_remembered(*good);
+  FluidView view = view_of(*good);
+  view.keeps = std::move(good);
+  return view;
 }
 
 // The class is instantiated in particle_fluid.cpp; these are its members defined here.
-template io::PolyFrame ParticleFluid<2>::frame_of(const ParticleSet<2>&) const;
+template FluidView ParticleFluid<2>::view_of(const ParticleSet<2>&) const;
 template std::optional<std::string> ParticleFluid<2>::check(const StepClock&) const;
 template void ParticleFluid<2>::remember_good(double);
-template io::FluidFrame ParticleFluid<2>::last_good_frame() const;
-template io::PolyFrame ParticleFluid<3>::frame_of(const ParticleSet<3>&) const;
+template FluidView ParticleFluid<2>::last_good_view() const;
+template FluidView ParticleFluid<3>::view_of(const ParticleSet<3>&) const;
 template std::optional<std::string> ParticleFluid<3>::check(const StepClock&) const;
 template void ParticleFluid<3>::remember_good(double);
-template io::FluidFrame ParticleFluid<3>::last_good_frame() const;
+template FluidView ParticleFluid<3>::last_good_view() const;
 
 }  // namespace sluice

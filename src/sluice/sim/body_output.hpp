@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "sluice/coupling/coupler.hpp"
-#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/fluid/fluid_energy.hpp"
 #include "sluice/io/csv_writer.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 

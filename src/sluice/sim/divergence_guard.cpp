@@ -17,7 +17,7 @@ const char* problem_of(const RigidBody& body, const AxisBox& escape_box, int dim
 }
 }  // namespace
 
-std::optional<std::string> DivergenceGuard::check(const StepClock& clock, const FluidSystem& fluid,
+std::optional<std::string> DivergenceGuard::check(const StepClock& clock, const FluidGuard& fluid,
                                                   const RigidBodies& bodies) const {
   // A body first: when one breaks, its particles break with it, and its name says more.
   for (std::size_t b = 0; b < bodies.count(); ++b) {

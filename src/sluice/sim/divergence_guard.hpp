@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/fluid/fluid_guard.hpp"
 #include "sluice/geometry/axis_box.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
@@ -20,7 +20,7 @@ class DivergenceGuard {
       : escape_box_(escape_box), dimension_(dimension) {}
 
   // The problem after the step that `clock` counts, or nothing when all is sound.
-  std::optional<std::string> check(const StepClock& clock, const FluidSystem& fluid,
+  std::optional<std::string> check(const StepClock& clock, const FluidGuard& fluid,
                                    const RigidBodies& bodies) const;
 
  private:

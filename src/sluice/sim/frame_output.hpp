@@ -1,14 +1,19 @@
 // Writes the fluid's frames (OUT/frames/frame_NNNNNN.vtp; a grid model's grid beside it as
-// grid_NNNNNN.vti) and lists them in the ParaView series OUT/CASE.pvd (docs/output.md).
+// grid_NNNNNN.vti) from its view (fluid/fluid_view.hpp) and lists them in the ParaView series
+// OUT/CASE.pvd (docs/output.md).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "sluice/fluid/fluid_view.hpp"
 #include "sluice/io/vtk_writer.hpp"
 
 namespace sluice {
+
+// The view as VTK's points and cells: reals as Float32, a plane's vectors as (x, 0, z).
+io::FluidFrame frame_of(const FluidView& view);
 
 class FrameOutput {
  public:
@@ -16,7 +21,7 @@ class FrameOutput {
   FrameOutput(const std::string& out_dir, const std::string& case_name);
 
   // Writes the next frame, for `time`.
-  void write(const io::FluidFrame& frame, double time);
+  void write(const FluidView& view, double time);
 
   int frames_written() const { return frame_count_; }
   const std::string& series_path() const { return series_.path(); }

@@ -19,7 +19,7 @@ std::vector<std::string> Probes::labels() const {
   return out;
 }
 
-std::vector<double> Probes::measure(const FluidSystem& fluid) const {
+std::vector<double> Probes::measure(const FluidObservation& fluid) const {
   std::vector<double> row;
   for (const auto& p : probes_) {
     switch (p.kind) {
@@ -37,7 +37,7 @@ std::vector<double> Probes::measure(const FluidSystem& fluid) const {
   return row;
 }
 
-void Probes::record(double time, const FluidSystem& fluid) {
+void Probes::record(double time, const FluidObservation& fluid) {
   if (!csv_) return;
   std::vector<double> row{time};
   for (double v : measure(fluid)) row.push_back(v);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sluice/fluid/fluid_system.hpp"
+#include "sluice/fluid/fluid_observation.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/io/csv_writer.hpp"
 
@@ -21,11 +21,11 @@ class Probes {
 
   bool empty() const { return probes_.empty(); }
   // Appends one row for the time.
-  void record(double time, const FluidSystem& fluid);
+  void record(double time, const FluidObservation& fluid);
   // Each probe's column label, its name and unit: "front [m]", "P1 [Pa]".
   std::vector<std::string> labels() const;
   // The values of one row, in the order of the case's probes (used by tests too).
-  std::vector<double> measure(const FluidSystem& fluid) const;
+  std::vector<double> measure(const FluidObservation& fluid) const;
   // Checkpoints: the CSV file's length.
   void archive_state(StateArchive& a) {
     if (csv_) csv_->archive_state(a);

@@ -108,10 +108,11 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     if (!resumed) throw;
     throw InputError(options.out_dir, 0, "", fmt::format("cannot resume: {}", e.what()));
   }
-  FluidSystem& fluid = sim.fluid();
+  const FluidObservation& fluid = sim.fluid().observation();
+  FluidGuard& fluid_guard = sim.fluid().guard();
   AxisBox escape_box = config.domain;
-  escape_box.min.array() -= fluid.interaction_radius();
-  escape_box.max.array() += fluid.interaction_radius();
+  escape_box.min.array() -= sim.fluid().interaction_radius();
+  escape_box.max.array() += sim.fluid().interaction_radius();
   DivergenceGuard guard(escape_box, D);
 
   RunSummary summary;
@@ -127,7 +128,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   if (!options.quiet) {
     fmt::print(stderr, "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n",
                config.name, D, summary.particles, fluid.size().element_name,
-               summary.fluid_particles, summary.bodies, summary.threads, fluid.describe());
+               summary.fluid_particles, summary.bodies, summary.threads, sim.fluid().describe());
     if (resumed) {
       fmt::print(stderr, "  resuming from {} at t = {:.6g} s (step {}) to t = {:.6g} s\n",
                  resumed->path, sim.time(), first_step, end_time);
@@ -147,7 +148,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   if (!resumed) {
     checkpoint_folder.clear();
     timers.time(output_slot, [&] {
-      frames.write(fluid.frame(), sim.time());
+      frames.write(fluid.view(), sim.time());
       probes->record(sim.time(), fluid);
       body_output->record(sim.time(), sim.bodies(), sim.coupler(), fluid.energy());
     });
@@ -157,7 +158,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     schedule.next_body = next_multiple(0, config.body_interval);
     schedule.next_checkpoint = checkpointing ? next_multiple(0, config.checkpoint_interval) : 0;
   }
-  fluid.remember_good(sim.time());  // the guard's last good state
+  fluid_guard.remember_good(sim.time());  // the guard's last good state
   const auto write_checkpoint = [&] {
     timers.time(checkpoint_slot, [&] {
       StateArchive archive;
@@ -185,21 +186,21 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     body_output->accumulate(t - before, sim.bodies(), sim.coupler());
     std::optional<std::string> problem;
     timers.time(guard_slot, [&] {
-      problem = guard.check(sim.clock(), fluid, sim.bodies());
+      problem = guard.check(sim.clock(), fluid_guard, sim.bodies());
       if (!problem) {
         if (const auto collapsed =
                 collapsed_step(sim.last_stable_step(), first, t, end_time, model)) {
           problem = diverged_at(sim.clock().step, t) + *collapsed;
         }
       }
-      if (!problem) fluid.remember_good(t);
+      if (!problem) fluid_guard.remember_good(t);
     });
     if (problem) {
-      frames.write(fluid.last_good_frame(), fluid.last_good_time());
+      frames.write(fluid_guard.last_good_view(), fluid_guard.last_good_time());
       if (!options.quiet) progress.finish();
       throw DivergenceError(
           *problem + fmt::format("; the last good state (t = {:.6g} s) is the last frame of {}",
-                                 fluid.last_good_time(), frames.series_path()));
+                                 fluid_guard.last_good_time(), frames.series_path()));
     }
     const bool at_end = t >= end_time * (1 - 1e-12);
     timers.time(output_slot, [&] {
@@ -212,7 +213,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
         schedule.next_body = next_multiple(t, config.body_interval);
       }
       if (t >= schedule.next_output * (1 - 1e-12) || at_end) {
-        frames.write(fluid.frame(), t);
+        frames.write(fluid.view(), t);
         schedule.next_output = next_multiple(t, config.output_interval);
       }
     });
@@ -252,7 +253,7 @@ CheckSummary check(const io::CaseConfig& config) {
   const SizeEstimate estimate = estimate_size(config);
   refuse_if_it_cannot_fit_here(config, estimate);
   Simulation<D> sim(config);
-  const FluidSize size = sim.fluid().size();
+  const FluidSize size = sim.fluid().observation().size();
   CheckSummary out;
   out.element_name = size.element_name;
   out.particles = size.elements;

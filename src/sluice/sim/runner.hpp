@@ -38,7 +38,7 @@ struct RunSummary {
   int most_substeps_per_step = 0;
   int most_exchanges_per_step = 1;    // of the fluid's loads with the bodies (Coupler::exchanges)
   VelocityStepTotals velocity_steps;  // the velocity-level solves (joints, complementarity)
-  std::vector<std::pair<std::string, double>> fluid_counters;  // FluidSystem::counters()
+  std::vector<std::pair<std::string, double>> fluid_counters;  // FluidObservation::counters()
   std::vector<std::pair<std::string, double>> final_probes;    // each probe at the end
 
   // This run's own steps per wall second, times the particles.

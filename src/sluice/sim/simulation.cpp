@@ -9,7 +9,7 @@ Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& mod
     : config_(models.prepared(config)),
       bodies_(std::make_unique<RigidBodies>(config_)),
       fluid_(make_fluid_system<D>(config_, *bodies_, models)),
-      coupler_(bodies_->system(), bodies_->count(), fluid_.get(), config.contact.subcycling,
+      coupler_(bodies_->system(), bodies_->count(), &fluid_->exchange(), config.contact.subcycling,
                models.coupling_scheme(config_)) {
   StageList before_bodies, after_bodies;
   fluid_->append_stages(before_bodies, after_bodies);

@@ -9,7 +9,6 @@
 #include "sluice/core/stage_timer.hpp"
 #include "sluice/coupling/coupler.hpp"
 #include "sluice/fluid/fluid_system.hpp"
-#include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/models/shipped_models.hpp"
 #include "sluice/sim/rigid_bodies.hpp"

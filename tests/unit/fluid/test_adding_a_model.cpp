@@ -8,6 +8,7 @@
 
 #include "particle_state_of.hpp"
 #include "sluice/core/errors.hpp"
+#include "sluice/sim/frame_output.hpp"
 #include "sluice/sim/probes.hpp"
 #include "sluice/sim/simulation.hpp"
 #include "unit/fluid/still_water_model.hpp"
@@ -81,7 +82,7 @@ TEST(AddingAModel, TheEngineStepsItWithABody) {
   EXPECT_LE(highest, highest_at_start);
 
   // Its own field is in the frame, beside the engine's, and holds the depth.
-  const io::PolyFrame frame = sim.fluid().frame().points;
+  const io::PolyFrame frame = frame_of(sim.fluid().observation().view()).points;
   const auto depth = std::find_if(frame.float_arrays.begin(), frame.float_arrays.end(),
                                   [](const io::PointArrayF32& a) { return a.name == "depth"; });
   ASSERT_NE(depth, frame.float_arrays.end());
@@ -100,7 +101,8 @@ TEST(AddingAModel, TheEngineStepsItWithABody) {
   middle.point = Vec3(0.1, 0, 0.1);
   gauge.kind = io::ProbeKind::kWaterHeight;
   gauge.point = Vec3(0.1, 0, 0);
-  const std::vector<double> measured = Probes({middle, gauge}, "").measure(sim.fluid());
+  const std::vector<double> measured =
+      Probes({middle, gauge}, "").measure(sim.fluid().observation());
   EXPECT_NEAR(measured[0], 1000 * g * 0.1, 0.01 * 1000 * g * 0.1);
   EXPECT_NEAR(measured[1], 0.2, 0.02);
 }
@@ -122,15 +124,15 @@ TEST(AddingAModel, RunsOnTheEmulatedDeviceWithoutCodeOfItsOwnForIt) {
         with_still_water());
     while (sim.time() < 0.2 - 1e-12) {
       sim.step(0.2);
-      sim.fluid().remember_good(sim.time());
+      sim.fluid().guard().remember_good(sim.time());
     }
-    EXPECT_EQ(sim.fluid().check(sim.clock()), std::nullopt);
-    End end{sim.fluid().frame().points,
-            sim.fluid().last_good_frame().points,
+    EXPECT_EQ(sim.fluid().guard().check(sim.clock()), std::nullopt);
+    End end{frame_of(sim.fluid().observation().view()).points,
+            frame_of(sim.fluid().guard().last_good_view()).points,
             {},
             {},
             sim.bodies().state(0).position,
-            sim.fluid().energy()};
+            sim.fluid().observation().energy()};
     const auto& ps =
         testing::particle_state(sim).particles;  // the device's copy came back for the frame
     end.position = ps.position;
@@ -173,7 +175,7 @@ TEST(AddingAModel, OnTheEmulatedDeviceTheHostsSetIsACache) {
     sim.step(0.2);
     auto& cache = const_cast<ParticleSet<2>&>(testing::particle_state(sim).particles);
     std::fill_n(cache.components<Real>("depth"), cache.size(), -1.0);
-    const io::PolyFrame frame = sim.fluid().frame().points;
+    const io::PolyFrame frame = frame_of(sim.fluid().observation().view()).points;
     const auto depth = std::find_if(frame.float_arrays.begin(), frame.float_arrays.end(),
                                     [](const io::PointArrayF32& a) { return a.name == "depth"; });
     ASSERT_NE(depth, frame.float_arrays.end());

@@ -95,3 +95,30 @@ TEST(WallContainment, AParticleInTheFloorIsPutBackOnItsSurface) {
 
 }  // namespace
 }  // namespace sluice
+
+namespace sluice {
+namespace {
+
+// A granular fluid's spheres meet the walls' surfaces (granular/sphere_walls.hpp), so it has
+// no wall particles; its walls still keep the fluid out of them, as a particle model's do.
+TEST(WallContainment, SpheresMeetTheWallsSurfacesWithoutWallParticles) {
+  auto tank = [](const std::string& model) {
+    return io::parse_case(
+        "dimension: 2\nspacing: 0.02\ndomain: {min: [-0.1, -0.1], max: [0.5, 0.4]}\n"
+        "end_time: 1\noutput_interval: 0.1\n"
+        "fluid:\n  blocks:\n    - {min: [-0.05, -0.05], max: [0.45, 0.1]}\n"
+        "walls:\n  - {type: tank, min: [0, 0], max: [0.4, 0.4], open: [z+]}\n"
+        "model: {name: " +
+            model + "}\n",
+        "tank.yaml");
+  };
+  const Simulation<2> spheres(tank("granular")), particles(tank("wcsph"));
+  const FluidSize with_surfaces = spheres.fluid().observation().size();
+  const FluidSize with_layers = particles.fluid().observation().size();
+  EXPECT_EQ(with_surfaces.wall, 0u);
+  EXPECT_GT(with_layers.wall, 0u);
+  EXPECT_EQ(with_surfaces.fluid, with_layers.fluid);
+}
+
+}  // namespace
+}  // namespace sluice

@@ -36,7 +36,9 @@ class GranularModel final : public ParticleFluid<D> {
  public:
   GranularModel(const GranularParameters& parameters, const io::CaseConfig& config,
                 const BodyGeometry& bodies)
-      : ParticleFluid<D>(config, parameters.radius * (2 + parameters.envelope), bodies),
+      // The spheres meet the walls' surfaces (sphere_walls.hpp): no wall particle.
+      : ParticleFluid<D>(config, parameters.radius * (2 + parameters.envelope), bodies,
+                         ParticleFluid<D>::Walls::kSurfacesOnly),
         p_(parameters),
         config_(config),
         bodies_(&bodies),

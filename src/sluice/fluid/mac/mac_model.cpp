@@ -312,33 +312,33 @@ void MacModel<D>::remember_good(double time) {
 }
 
 template <int D>
-io::FluidFrame MacModel<D>::frame_of(const CellField& phi, const Fields& f) const {
-  io::FluidFrame frame;
-  const std::vector<Vec3> surface = surface_mesh<D>(grid_, phi);
-  frame.points.points_per_cell = D;
-  for (const Vec3& x : surface)
-    for (int a = 0; a < 3; ++a) frame.points.points.push_back(static_cast<float>(x[a]));
+FluidView MacModel<D>::view_of(const CellField& phi, const Fields& f) const {
+  FluidView view;
+  std::vector<double> surface;
+  for (const Vec3& x : surface_mesh<D>(grid_, phi))
+    for (int a = 0; a < 3; ++a) surface.push_back(x[a]);
+  view.positions = FieldView::holding("position", 3, std::move(surface));
+  view.points_per_cell = D;
 
-  io::ImageFrame grid;
+  FluidView::Cells grid;
   const Vec3 origin = to_3d<D>(grid_.origin);
   for (int a = 0; a < 3; ++a) grid.origin[a] = origin[a];
-  grid.cells = {grid_.cells[0], D == 3 ? grid_.cells[1] : 1, grid_.cells[D - 1]};
+  grid.count = {grid_.cells[0], D == 3 ? grid_.cells[1] : 1, grid_.cells[D - 1]};
   grid.spacing = grid_.h;
   const Lattice<D> cells = grid_.cell_lattice();
   const std::size_t n = cells.size();
-  io::PointArrayF32 pressure{"pressure", 1, {}}, level{"level_set", 1, {}},
-      velocity{"velocity", 3, {}}, solid{"solid", 1, {}};
+  std::vector<double> solid, velocity;
   for (std::size_t k = 0; k < n; ++k) {
-    const GridIndex<D> c = cells.coordinates(k);
-    pressure.values.push_back(static_cast<float>(f.pressure[k]));
-    level.values.push_back(static_cast<float>(phi[k]));
-    solid.values.push_back(solid_.cell_is_solid(k) ? 1.0f : 0.0f);
-    const Vec3 v = to_3d<D>(velocity_at(grid_, f.u, cells.position(c)));
-    for (int a = 0; a < 3; ++a) velocity.values.push_back(static_cast<float>(v[a]));
+    solid.push_back(solid_.cell_is_solid(k) ? 1.0 : 0.0);
+    const Vec<D> v = velocity_at(grid_, f.u, cells.position(cells.coordinates(k)));
+    for (int a = 0; a < D; ++a) velocity.push_back(v[a]);
   }
-  grid.cell_arrays = {std::move(pressure), std::move(level), std::move(velocity), std::move(solid)};
-  frame.grid = std::move(grid);
-  return frame;
+  grid.fields = {FieldView::of("pressure", 1, f.pressure.data(), n),
+                 FieldView::of("level_set", 1, phi.data(), n),
+                 FieldView::holding("velocity", D, std::move(velocity)),
+                 FieldView::holding("solid", 1, std::move(solid))};
+  view.cells = std::move(grid);
+  return view;
 }
 
 template <int D>

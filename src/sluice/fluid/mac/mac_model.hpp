@@ -23,10 +23,17 @@
 namespace sluice {
 
 template <int D>
-class MacModel : public FluidSystem {
+class MacModel : public FluidSystem,
+                 public FluidExchange,
+                 public FluidObservation,
+                 public FluidGuard {
  public:
   MacModel(const MacParameters& parameters, const io::CaseConfig& config,
            const BodyGeometry& bodies);
+
+  FluidExchange& exchange() override { return *this; }
+  const FluidObservation& observation() const override { return *this; }
+  FluidGuard& guard() override { return *this; }
 
   std::string describe() const override;
   void append_stages(StageList& before_bodies, StageList& after_bodies) override;
@@ -36,13 +43,13 @@ class MacModel : public FluidSystem {
   void solve_body_velocities() override { solves_body_velocities_ = true; }
   std::vector<Vec6> solved_body_velocities() const override { return solved_velocities_; }
 
-  io::FluidFrame frame() const override { return frame_of(surface_.phi(), now_); }
+  FluidView view() const override { return view_of(surface_.phi(), now_); }
   double pressure_at(const Vec3& x) const override;
   double water_height_at(const Vec3& gauge) const override;
   double surge_front(int axis) const override;
   std::optional<std::string> check(const StepClock& clock) const override;
   void remember_good(double time) override;
-  io::FluidFrame last_good_frame() const override { return frame_of(last_good_.phi, last_good_); }
+  FluidView last_good_view() const override { return view_of(last_good_.phi, last_good_); }
   double last_good_time() const override { return last_good_time_; }
   FluidSize size() const override;
   FluidEnergy energy() const override;
@@ -75,7 +82,8 @@ class MacModel : public FluidSystem {
   // and answer through their joined mobility.
   void project(double dt, bool moving = true);
   void extend();
-  io::FluidFrame frame_of(const CellField& phi, const Fields& f) const;
+  // The surface of `phi` as points, and the cells with their fields.
+  FluidView view_of(const CellField& phi, const Fields& f) const;
   bool is_water(std::size_t cell) const {
     return surface_.phi()[cell] < 0 && !solid_.cell_is_solid(cell);
   }
