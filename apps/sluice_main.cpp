@@ -16,6 +16,7 @@
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/linear/hypre_session.hpp"
 #include "sluice/sim/runner.hpp"
 #include "sluice/sim/size_estimate.hpp"
 #include "sweep_command.hpp"
@@ -56,6 +57,8 @@ void print_summary(const sluice::RunSummary& r) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The process's MPI and hypre: started by the first hypre solve, stopped when main returns.
+  sluice::HypreSession hypre;
   CLI::App app{"sluice: free-surface flow with rigid bodies (particle methods)"};
   app.require_subcommand(1);
   std::string case_path, out_dir, stats_path, resume_dir, device;
@@ -171,6 +174,7 @@ int main(int argc, char** argv) {
     if (end_time > 0) options.end_time = end_time;
     options.stats_path = stats_path;
     options.live_progress = isatty(fileno(stderr)) != 0;
+    options.hypre = &hypre;
     const auto summary = sluice::run_case(config, options);
     print_summary(summary);
     return sluice::kExitOk;

@@ -11,12 +11,19 @@
 #include "sluice/coupling/body_geometry.hpp"
 #include "sluice/fluid/fluid_system.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/linear/hypre_session.hpp"
 
 namespace sluice {
 
+// What the process lends a model beyond its case and its bodies: the session of MPI and hypre
+// in which hypre's solvers run (null in a process without one: linear/sparse_solver.hpp).
+struct ModelServices {
+  HypreSession* hypre = nullptr;
+};
+
 // Reads the model's parameters from the case (throws InputError) and builds it, ready to step.
-using FluidFactory =
-    std::function<std::unique_ptr<FluidSystem>(const io::CaseConfig&, const BodyGeometry&)>;
+using FluidFactory = std::function<std::unique_ptr<FluidSystem>(
+    const io::CaseConfig&, const BodyGeometry&, const ModelServices&)>;
 
 // What a model changes in the case before anything is built: bodies it adds to the case's own
 // (penalty-sph: the grains of its free solid layers), the contact method it needs (granular).

@@ -32,8 +32,10 @@ const ModelEntry* ModelRegistry::find(const std::string& name) const {
 }
 
 std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
-                                                 const BodyGeometry& bodies) const {
-  if (const ModelEntry* entry = find(config.model_name)) return entry->make(config, bodies);
+                                                 const BodyGeometry& bodies,
+                                                 const ModelServices& services) const {
+  if (const ModelEntry* entry = find(config.model_name))
+    return entry->make(config, bodies, services);
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.fail_choice("name", "model", config.model_name, names());
 }
@@ -71,16 +73,19 @@ std::string ModelRegistry::coupling_scheme(const io::CaseConfig& config) const {
 template <int D>
 std::unique_ptr<FluidSystem> make_fluid_system(const io::CaseConfig& config,
                                                const BodyGeometry& bodies,
-                                               const ModelRegistry& models) {
+                                               const ModelRegistry& models,
+                                               const ModelServices& services) {
   if (!config.has_fluid()) return std::make_unique<BodyParticles<D>>(config, bodies);
-  return models.make(config, bodies);
+  return models.make(config, bodies, services);
 }
 
 template std::unique_ptr<FluidSystem> make_fluid_system<2>(const io::CaseConfig&,
                                                            const BodyGeometry&,
-                                                           const ModelRegistry&);
+                                                           const ModelRegistry&,
+                                                           const ModelServices&);
 template std::unique_ptr<FluidSystem> make_fluid_system<3>(const io::CaseConfig&,
                                                            const BodyGeometry&,
-                                                           const ModelRegistry&);
+                                                           const ModelRegistry&,
+                                                           const ModelServices&);
 
 }  // namespace sluice

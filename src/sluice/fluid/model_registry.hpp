@@ -27,7 +27,8 @@ class ModelRegistry {
   // The entry of the model named `name`, or null.
   const ModelEntry* find(const std::string& name) const;
   // The model the case names (throws InputError naming model.name when none is registered).
-  std::unique_ptr<FluidSystem> make(const io::CaseConfig& config, const BodyGeometry& bodies) const;
+  std::unique_ptr<FluidSystem> make(const io::CaseConfig& config, const BodyGeometry& bodies,
+                                    const ModelServices& services) const;
   // The case as its model prepares it (throws InputError).
   io::CaseConfig prepared(io::CaseConfig config) const;
   // The coupling scheme of the case: its `coupling.scheme`, which its model must support, or
@@ -44,6 +45,7 @@ class ModelRegistry {
 template <int D>
 std::unique_ptr<FluidSystem> make_fluid_system(const io::CaseConfig& config,
                                                const BodyGeometry& bodies,
-                                               const ModelRegistry& models);
+                                               const ModelRegistry& models,
+                                               const ModelServices& services);
 
 }  // namespace sluice

@@ -1,40 +1,26 @@
 #include "sluice/linear/boomeramg_solver.hpp"
 
+#include "sluice/linear/hypre_session.hpp"
+
 #include <HYPRE.h>
 #include <HYPRE_parcsr_ls.h>
 #include <mpi.h>
 
-#include <cstdlib>
 #include <numeric>
+#include <stdexcept>
 
 namespace sluice {
 
 namespace {
 
-// hypre needs MPI; a run of sluice is one process, so MPI starts as a singleton the first
-// time a solver is made and stops at exit.
-void start_mpi_once() {
-  static const bool started = [] {
-    int initialized = 0;
-    MPI_Initialized(&initialized);
-    if (!initialized) {
-      MPI_Init(nullptr, nullptr);
-      std::atexit([] {
-        HYPRE_Finalize();
-        MPI_Finalize();
-      });
-    }
-    HYPRE_Init();
-    return true;
-  }();
-  (void)started;
-}
-
 class BoomerAmg final : public SparseSolver {
  public:
-  explicit BoomerAmg(const SolverSettings& settings) : settings_(settings) { start_mpi_once(); }
+  explicit BoomerAmg(const SolverSettings& settings) : settings_(settings) {}
 
   SolveReport solve(const SparseRows& a, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    if (settings_.hypre == nullptr)
+      throw std::logic_error("boomeramg: made without the process's hypre session");
+    settings_.hypre->start();
     const HYPRE_Int n = static_cast<HYPRE_Int>(a.rows());
     SolveReport report;
     if (n == 0) {

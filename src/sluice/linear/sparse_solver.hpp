@@ -18,9 +18,14 @@ namespace sluice {
 // row-major matrix by a vector on all threads.
 using SparseRows = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
+class HypreSession;  // hypre_session.hpp
+
 struct SolverSettings {
   double tolerance = 1e-8;  // on the residual relative to the right-hand side, |r| / |b|
   int max_iterations = 1000;
+  // The process's MPI and hypre, which a hypre solver starts at its first solve; it has none
+  // without one (made without it, it throws std::logic_error when asked to solve).
+  HypreSession* hypre = nullptr;
 };
 
 struct SolveReport {

@@ -64,7 +64,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // must leave no directory behind; and nothing is allocated for a case that cannot fit.
   const SizeEstimate estimate = estimate_size(config);
   refuse_if_it_cannot_fit_here(config, estimate);
-  Simulation<D> sim(config);
+  Simulation<D> sim(config, ModelServices{options.hypre});
   const double end_time = options.end_time.value_or(config.end_time);
   const std::string model = config.has_fluid() ? config.model_name : "bodies-alone";
   const CheckpointFolder checkpoint_folder(options.out_dir);
@@ -252,7 +252,7 @@ template <int D>
 CheckSummary check(const io::CaseConfig& config) {
   const SizeEstimate estimate = estimate_size(config);
   refuse_if_it_cannot_fit_here(config, estimate);
-  Simulation<D> sim(config);
+  Simulation<D> sim(config);  // it solves nothing: no hypre session
   const FluidSize size = sim.fluid().observation().size();
   CheckSummary out;
   out.element_name = size.element_name;

@@ -10,6 +10,8 @@
 
 namespace sluice {
 
+class HypreSession;  // linear/hypre_session.hpp
+
 struct RunOptions {
   std::string out_dir;             // created if missing
   std::optional<double> end_time;  // overrides the case's end_time
@@ -18,6 +20,9 @@ struct RunOptions {
   bool quiet = false;              // no progress and no summary
   // Continue the run in out_dir from its newest valid checkpoint (docs/output.md#checkpoints).
   bool resume = false;
+  // The process's MPI and hypre, for a model whose pressure solver is hypre's; without it
+  // that solver cannot solve.
+  HypreSession* hypre = nullptr;
 };
 
 struct RunSummary {

@@ -5,10 +5,11 @@
 namespace sluice {
 
 template <int D>
-Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& models)
+Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& models,
+                          const ModelServices& services)
     : config_(models.prepared(config)),
       bodies_(std::make_unique<RigidBodies>(config_)),
-      fluid_(make_fluid_system<D>(config_, *bodies_, models)),
+      fluid_(make_fluid_system<D>(config_, *bodies_, models, services)),
       coupler_(bodies_->system(), bodies_->count(), &fluid_->exchange(), config.contact.subcycling,
                models.coupling_scheme(config_)) {
   StageList before_bodies, after_bodies;

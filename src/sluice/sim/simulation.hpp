@@ -19,9 +19,12 @@ template <int D>
 class Simulation {
  public:
   // Builds the bodies (the case's and those its model adds), the fluid (the model the case
-  // names among `models`) and the coupling from a validated case (throws InputError).
-  Simulation(const io::CaseConfig& config, const ModelRegistry& models);
-  explicit Simulation(const io::CaseConfig& config) : Simulation(config, shipped_models<D>()) {}
+  // names among `models`, with what the process lends it: `services`) and the coupling from a
+  // validated case (throws InputError).
+  Simulation(const io::CaseConfig& config, const ModelRegistry& models,
+             const ModelServices& services = {});
+  explicit Simulation(const io::CaseConfig& config, const ModelServices& services = {})
+      : Simulation(config, shipped_models<D>(), services) {}
 
   // Advances by one step of the model's stable size, clipped so as not to pass `until`.
   void step(double until);

@@ -69,7 +69,7 @@ class StillWater final : public ParticleFluid<D> {
 // step.
 template <int D>
 std::unique_ptr<FluidSystem> make_still_water(const io::CaseConfig& config,
-                                              const BodyGeometry& bodies) {
+                                              const BodyGeometry& bodies, const ModelServices&) {
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.required<std::string>("name");
   const double time_step = model.required_positive("time_step");

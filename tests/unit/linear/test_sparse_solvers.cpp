@@ -3,12 +3,26 @@
 // that is not symmetric.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include <stdexcept>
+
+#include "sluice/linear/hypre_session.hpp"
 #include "sluice/linear/sparse_solver.hpp"
 
 namespace sluice {
 namespace {
+
+// MPI starts once in a process: the test binary's hypre session lives as long as its tests,
+// and stops after the last of them.
+class HypreEnvironment : public ::testing::Environment {
+ public:
+  void TearDown() override { session.finish(); }
+  HypreSession session;
+};
+HypreEnvironment* const hypre_environment =
+    static_cast<HypreEnvironment*>(::testing::AddGlobalTestEnvironment(new HypreEnvironment));
 
 // `upwind` > 0 adds a one-sided difference in i (a convection term): the matrix is then not
 // symmetric.
@@ -36,6 +50,7 @@ TEST(SparseSolvers, EachSolvesAPoissonProblem) {
   const Eigen::VectorXd b = a * expected;
   SolverSettings settings;
   settings.tolerance = 1e-10;
+  settings.hypre = &hypre_environment->session;
   ASSERT_GE(sparse_solver_names().size(), 2u);
   for (const std::string& name : sparse_solver_names()) {
     SCOPED_TRACE(name);
@@ -104,6 +119,25 @@ TEST(SparseSolvers, ReportsAFailureToConverge) {
 
 TEST(SparseSolvers, UnknownNameGivesNothing) {
   EXPECT_EQ(make_sparse_solver("no_such_solver", SolverSettings{}), nullptr);
+}
+
+// hypre's solver starts MPI and hypre through the session it is given, at its first solve;
+// made without one it refuses to solve, rather than start MPI where nothing would stop it.
+TEST(HypreSession, StartsAtTheFirstSolveAndAHypreSolverWithoutOneRefuses) {
+  const std::vector<std::string> names = sparse_solver_names();
+  if (std::find(names.begin(), names.end(), "boomeramg") == names.end())
+    GTEST_SKIP() << "built without hypre";
+  const SparseRows a = poisson(10, 1e-3);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(a.rows());
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(a.rows());
+  auto alone = make_sparse_solver("boomeramg", SolverSettings{});
+  EXPECT_THROW(alone->solve(a, b, x), std::logic_error);
+  HypreSession& session = hypre_environment->session;
+  auto with_session = make_sparse_solver("boomeramg", SolverSettings{1e-10, 100, &session});
+  EXPECT_TRUE(with_session->solve(a, b, x).converged);
+  EXPECT_TRUE(session.started());
+  session.start();  // again: nothing
+  EXPECT_TRUE(session.started());
 }
 
 }  // namespace

@@ -9,7 +9,7 @@ namespace {
 
 template <int D>
 std::unique_ptr<FluidSystem> make_constraint(const io::CaseConfig& config,
-                                             const BodyGeometry& bodies) {
+                                             const BodyGeometry& bodies, const ModelServices&) {
   auto model =
       std::make_unique<ConstraintModel<D>>(read_constraint_parameters(config), config, bodies);
   model->initialize();

@@ -8,8 +8,8 @@ namespace sluice {
 namespace {
 
 template <int D>
-std::unique_ptr<FluidSystem> make_granular(const io::CaseConfig& config,
-                                           const BodyGeometry& bodies) {
+std::unique_ptr<FluidSystem> make_granular(const io::CaseConfig& config, const BodyGeometry& bodies,
+                                           const ModelServices&) {
   auto model = std::make_unique<GranularModel<D>>(read_granular_parameters(config), config, bodies);
   model->initialize();
   return model;

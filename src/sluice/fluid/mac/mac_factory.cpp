@@ -19,8 +19,11 @@ double grid_cells(const io::CaseConfig& config) {
 }
 
 template <int D>
-std::unique_ptr<FluidSystem> make_mac(const io::CaseConfig& config, const BodyGeometry& bodies) {
-  return std::make_unique<MacModel<D>>(read_mac_parameters(config), config, bodies);
+std::unique_ptr<FluidSystem> make_mac(const io::CaseConfig& config, const BodyGeometry& bodies,
+                                      const ModelServices& services) {
+  MacParameters parameters = read_mac_parameters(config);
+  parameters.hypre = services.hypre;
+  return std::make_unique<MacModel<D>>(parameters, config, bodies);
 }
 
 }  // namespace

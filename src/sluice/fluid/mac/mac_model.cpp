@@ -44,7 +44,8 @@ MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& con
       viscosity_(config.fluid.kinematic_viscosity),
       geometry_(bodies),
       solid_(grid_, bodies),
-      projection_(make_sparse_solver(solver_, {parameters.tolerance, parameters.max_iterations})),
+      projection_(make_sparse_solver(
+          solver_, {parameters.tolerance, parameters.max_iterations, parameters.hypre})),
       surface_(grid_, level_set_of_blocks<D>(grid_, block_boxes(config), config.domain),
                parameters.particles_per_cell, parameters.reinitialise_every),
       motion_(bodies.motion()),

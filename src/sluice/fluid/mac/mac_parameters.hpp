@@ -6,6 +6,7 @@
 
 #include "sluice/fluid/mac/mac_grid.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/linear/hypre_session.hpp"
 
 namespace sluice {
 
@@ -20,6 +21,7 @@ struct MacParameters {
   std::string solver = "auto";
   double tolerance = 1e-8;  // of the pressure solve, |r| / |b|
   int max_iterations = 2000;
+  HypreSession* hypre = nullptr;  // the process's, for hypre's solver (linear/sparse_solver.hpp)
   // The particle level set (Enright et al. 2002): marker particles per cell of the interface
   // band, each side; 0 turns the correction off.
   int particles_per_cell = 16;

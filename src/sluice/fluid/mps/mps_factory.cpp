@@ -7,8 +7,11 @@ namespace sluice {
 namespace {
 
 template <int D>
-std::unique_ptr<FluidSystem> make_mps(const io::CaseConfig& config, const BodyGeometry& bodies) {
-  auto model = std::make_unique<MpsModel<D>>(read_mps_parameters(config), config, bodies);
+std::unique_ptr<FluidSystem> make_mps(const io::CaseConfig& config, const BodyGeometry& bodies,
+                                      const ModelServices& services) {
+  MpsParameters parameters = read_mps_parameters(config);
+  parameters.solver_settings.hypre = services.hypre;
+  auto model = std::make_unique<MpsModel<D>>(parameters, config, bodies);
   model->initialize();
   return model;
 }

@@ -9,7 +9,7 @@ namespace {
 
 template <int D>
 std::unique_ptr<FluidSystem> make_penalty_sph(const io::CaseConfig& config,
-                                              const BodyGeometry& bodies) {
+                                              const BodyGeometry& bodies, const ModelServices&) {
   auto model =
       std::make_unique<PenaltySphModel<D>>(read_penalty_sph_parameters(config), config, bodies);
   model->initialize();

@@ -17,7 +17,8 @@ std::unique_ptr<FluidSystem> build(const WcsphParameters& p, const io::CaseConfi
 }
 
 template <int D>
-std::unique_ptr<FluidSystem> make_wcsph(const io::CaseConfig& config, const BodyGeometry& bodies) {
+std::unique_ptr<FluidSystem> make_wcsph(const io::CaseConfig& config, const BodyGeometry& bodies,
+                                        const ModelServices&) {
   const WcsphParameters p = read_wcsph_parameters(config);
   switch (p.kernel) {
     case KernelChoice::kCubicSpline:
