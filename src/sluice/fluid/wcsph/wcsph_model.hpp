@@ -33,6 +33,7 @@ class WcsphModel final : public ParticleFluid<D> {
              const BodyGeometry& bodies)
       : ParticleFluid<D>(config, Kernel(parameters.smoothing_length(config.spacing)).support(),
                          bodies),
+        bodies_(bodies),
         p_(parameters),
         kernel_(parameters.smoothing_length(config.spacing)),
         eos_(config.fluid.density, parameters.sound_speed, parameters.gamma,
@@ -72,7 +73,9 @@ class WcsphModel final : public ParticleFluid<D> {
 
   void archive_state(StateArchive& a) override {
     Base::archive_state(a);  // on a device, uploads what it read
-    if (a.reading()) points_placed_ = false;
+    // The bodies were read before the fluid (Simulation::archive_state): the device places
+    // their points where they stand.
+    if (a.reading() && device_) place_body_points_on_device();
   }
 
   void model_stages(StageList& before, StageList& after) override {
@@ -102,21 +105,10 @@ class WcsphModel final : public ParticleFluid<D> {
     }));
   }
 
-  // On a device the base sends the bodies' kinematics alone (19 reals a body), and the device
-  // places their points and particles.
-  void receive_body_motion(const std::vector<BodyKinematics>& motion) override {
-    Base::receive_body_motion(motion);
-    points_placed_ = true;
-  }
-
   // On a device, the loads are summed there from the points where the last motion put them:
   // one transfer of 6 reals per body.
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override {
     if (!device_) return Base::body_loads(motion);
-    if (!points_placed_) {  // the loads before the first exchange: placed where the host's are
-      this->on_device([&] { device_->set_body_motion(pack_body_motion(motion)); });
-      points_placed_ = true;
-    }
     std::vector<Vec3> centre(motion.size());
     for (std::size_t b = 0; b < motion.size(); ++b) centre[b] = motion[b].position;
     std::vector<Wrench> out;
@@ -162,7 +154,13 @@ class WcsphModel final : public ParticleFluid<D> {
     run->time_stages = p_.time_device_stages;
     device_ = run.get();
     this->run_on_device(std::move(run));
-    points_placed_ = false;
+    place_body_points_on_device();
+  }
+
+  // The device places the body points from the bodies' motion (the base sends it 19 reals a
+  // body at each exchange): at the start, and on a resume, where the bodies stand then.
+  void place_body_points_on_device() {
+    this->on_device([&] { device_->set_body_motion(pack_body_motion(bodies_.motion())); });
   }
 
   // The host's particle set as the loop bodies see it.
@@ -246,6 +244,7 @@ class WcsphModel final : public ParticleFluid<D> {
     return k;
   }
 
+  const BodyGeometry& bodies_;
   WcsphParameters p_;
   Kernel kernel_;
   TaitEquation eos_;
@@ -254,10 +253,8 @@ class WcsphModel final : public ParticleFluid<D> {
   PackedParticles packed_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
-  // With model.device: the run there (the base owns it), and whether the device knows where
-  // the body points stand.
+  // With model.device: the run there (the base owns it).
   WcsphDeviceRun<D>* device_ = nullptr;
-  mutable bool points_placed_ = false;
 };
 
 }  // namespace sluice
