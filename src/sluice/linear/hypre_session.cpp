@@ -26,7 +26,8 @@ void HypreSession::start() {
 }
 
 void HypreSession::finish() {
-  if (!hypre_started_ || finished_) return;
+  if (!hypre_started_) return;
+  hypre_started_ = false;
   finished_ = true;
 #ifdef SLUICE_WITH_HYPRE
   HYPRE_Finalize();

@@ -16,9 +16,10 @@ class HypreSession {
 
   // Starts MPI (unless it runs already) and hypre; again, nothing.
   void start();
-  // Stops hypre, and MPI if this session started it; again, or before start, nothing.
+  // Stops hypre, and MPI if this session started it; again, or before start, nothing. A start
+  // after it throws std::logic_error: MPI cannot start twice in a process.
   void finish();
-  bool started() const { return hypre_started_; }
+  bool started() const { return hypre_started_; }  // and not finished
 
  private:
   bool hypre_started_ = false;
