@@ -21,7 +21,7 @@ import dam_break_2d
 import fording_convergence
 import kleefsman_figures as f3
 from probes_csv import read_probe
-from runs import ROOT, write_table
+from runs import ROOT, result_path, write_table
 
 MODELS = ("wcsph", "mps", "penalty-sph", "constraint", "mac", "granular")
 F2_SPACING = {"wcsph": 0.025, "mps": 0.025, "penalty-sph": 0.025, "constraint": 0.05,
@@ -52,8 +52,9 @@ def b1_cell(model):
 
 def f3_cell(model, prefix):
     spacing = F3_SPACING.get(model, 0.03)
-    path = os.path.join(ROOT, f"{prefix}_{model}_{spacing:g}", "probes.csv")
-    if not os.path.exists(path):
+    path = result_path(os.path.join(ROOT, f"{prefix}_{model}_{spacing:g}"),
+                       f"kleefsman_3d/{model}_{spacing:g}", "probes.csv")
+    if path is None:
         return "not run"
     series = f3.read_probes(path)
     span = (0.0, min(6.0, float(series["time"][-1])))
@@ -68,10 +69,11 @@ def f3_cell(model, prefix):
 
 def b5_cells(model, prefix):
     """The mean drags and the wall time; a run that stopped says where, and for mac the
-    prescribed vehicle's figures follow (its jointed vehicle diverges)."""
+    prescribed vehicle's figures follow (its jointed vehicle does not reach 2 s)."""
     drags, wall = [], "–"
     for spacing in fording_convergence.SPACINGS:
-        f = fording_convergence.figures(os.path.join(ROOT, f"{prefix}_{model}_{spacing:g}"))
+        f = fording_convergence.figures(os.path.join(ROOT, f"{prefix}_{model}_{spacing:g}"),
+                                        f"fording/{model}_{spacing:g}")
         if f is None:
             drags.append("–")
             continue

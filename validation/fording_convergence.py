@@ -27,9 +27,9 @@ from runs import (ROOT, each_run, keep_results, model_runs_parser, result_path, 
                   run_model, save_figure, write_table)
 
 MODELS = ("wcsph", "mps", "penalty-sph", "constraint", "mac", "granular", "mac-prescribed")
-# mac's projection couples free bodies (Batty et al. 2007) but not the joints and contacts that
-# hold the vehicle together: with them it diverges. `mac-prescribed` runs it with every part
-# carried at the carriage's motion (the wheels do not turn), without joints.
+# `mac-prescribed` runs the grid with every part carried at the carriage's motion (the wheels do
+# not turn), without joints: beside `mac`, whose rolling wheels squeeze the water between them and
+# the bed (docs/validation.md, B5).
 CARRIED = "{type: constant_velocity, ramp_time: 0.3}"
 VARIANTS = {"mac-prescribed": ("mac", ["joints=[]"] + [
     item for b in range(1, 6) for item in (f"bodies.{b}.motion=prescribed",

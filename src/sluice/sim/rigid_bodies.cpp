@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "sluice/ccp/contact_rows.hpp"
 #include "sluice/contact/contact_body_builder.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/rigid/joined_mobility.hpp"
@@ -225,7 +226,7 @@ std::vector<BodyKinematics> RigidBodies::motion() const {
   return out;
 }
 
-BodyMobility RigidBodies::mobility(std::size_t b) const {
+BodyMobility RigidBodies::own_mobility(std::size_t b) const {
   BodyMobility m;
   if (configs_[b].motion != io::BodyMotion::kFree) return m;
   const RigidBody& s = state(b);
@@ -235,18 +236,22 @@ BodyMobility RigidBodies::mobility(std::size_t b) const {
     free_rotation(a, a) = s.locked_rotation[a] ? 0 : 1;
   }
   m.inverse_inertia = free_rotation * s.inverse_world_inertia() * free_rotation;
+  return m;
+}
+
+BodyMobility RigidBodies::mobility(std::size_t b) const {
   // A body in contact answers through the contact as much as through its own mass: a fluid
   // that solved for its velocity without the contact would move it into what holds it, and
   // the contact's answer, a step late, would pump energy into the water (two boxes landing on
   // each other: 50 J). Held by a contact, a body is immobile to the fluid for that step.
   if (system_.contact_force()[b].norm() > 0) return {};
-  return m;
+  return own_mobility(b);
 }
 
 Eigen::MatrixXd RigidBodies::joined_mobility() const {
   std::vector<Mat6> own(count(), Mat6::Zero());
   for (std::size_t b = 0; b < count(); ++b) {
-    const BodyMobility m = mobility(b);
+    const BodyMobility m = own_mobility(b);
     own[b].topLeftCorner<3, 3>() = m.inverse_mass;
     own[b].bottomRightCorner<3, 3>() = m.inverse_inertia;
   }
@@ -254,6 +259,18 @@ Eigen::MatrixXd RigidBodies::joined_mobility() const {
   RowGroup rows;
   for (const Joint& joint : system_.rigid().joints()) {
     add_joint_rows(joint, system_.bodies(), 1.0, 0.0, rows);
+  }
+  // Each touching pair of surface particles keeps its normal velocity for the step, as a joint
+  // would: the pressure moves no body into what holds it (a wheel into the bed), and lets it
+  // roll, slide or turn along it; the contact's own force and friction act in the bodies'
+  // advance. A body held by a contact, immobile instead, took no load at all.
+  const std::vector<SystemBody>& bodies = system_.bodies();
+  for (const Contact& c : system_.contact().contacts().contacts()) {
+    const Vec3& xa = bodies[c.a].state.position;
+    const Vec3& xb = bodies[c.b].state.position;
+    for (const ParticlePair& p : c.pairs) {
+      rows.add_row(contact_rows(c.a, c.b, p.normal, p.point - xa, p.point - xb)[0]);
+    }
   }
   return sluice::joined_mobility(own, rows);
 }

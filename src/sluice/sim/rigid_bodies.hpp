@@ -51,6 +51,8 @@ class RigidBodies final : public BodyGeometry {
   SurfacePoint nearest_on_walls(const Vec3& x) const override;
 
  private:
+  // Body b's mobility by its mass, inertia and locked motions alone (its contacts aside).
+  BodyMobility own_mobility(std::size_t b) const;
   bool body_occupies(std::size_t b, const Vec3& x, double clearance) const;
   // The case's joints, their bodies found by name (throws InputError for an unknown one).
   void add_joints(const io::CaseConfig& config);

@@ -126,5 +126,35 @@ TEST(RigidBodies, NearestSurfaceOfABodyAndOfTheWalls) {
   EXPECT_NEAR(sum.norm(), 0, 1e-12);
 }
 
+// The grid's projection moves the bodies through their joined mobility W (projection scheme).
+// A box resting on the floor keeps its contact pairs' normal velocities there, as a joint
+// would: W answers a downward push with nothing and a push along the floor, at its centre of
+// mass, as a free body would. For the held loads, which have no such rows, a body held by a
+// contact is immobile.
+TEST(RigidBodies, ABoxOnTheFloorMovesAlongItButNotIntoIt) {
+  RigidBodies bodies(
+      case_with("  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.5, 0.5, "
+                "0.101]}\n",
+                false));
+  for (int step = 0; step < 200 && bodies.system().contact_force()[0].norm() == 0; ++step)
+    bodies.system().advance(1e-3);
+  ASSERT_GT(bodies.system().contact_force()[0].norm(), 0) << "the box never reached the floor";
+  ASSERT_FALSE(bodies.system().contact().contacts().contacts().empty());
+  const double mass = bodies.state(0).mass;
+  const Eigen::MatrixXd w = bodies.joined_mobility();
+  ASSERT_EQ(w.rows(), 6);
+  Eigen::VectorXd push = Eigen::VectorXd::Zero(6);
+  push[2] = -1;  // N s, down into the floor
+  EXPECT_LT((w * push).norm(), 1e-9 / mass);
+  push.setZero();
+  push[0] = 1;  // along the floor
+  Eigen::VectorXd free = Eigen::VectorXd::Zero(6);
+  free[0] = 1 / mass;
+  EXPECT_LT((w * push - free).norm(), 1e-9 / mass);
+  const BodyMobility held = bodies.mobility(0);
+  EXPECT_EQ(held.inverse_mass, Eigen::Matrix3d::Zero());
+  EXPECT_EQ(held.inverse_inertia, Eigen::Matrix3d::Zero());
+}
+
 }  // namespace
 }  // namespace sluice

@@ -35,10 +35,10 @@ ModelEntry mac_entry() {
   entry.size.bytes_per_element = 400;  // measured: docs/output.md
   entry.size.element_name = "cells";
   entry.size.elements = grid_cells;
-  // Its pressure solves the bodies' velocities (Batty et al. 2007); in the projection scheme the
-  // bodies take them, joints kept. Held loads stay the default: a body held by a contact is
-  // immobile to the projection, and its load is then lost (docs/architecture.md, Projection).
-  entry.schemes = {"held-loads", "projection"};
+  // Its pressure solves the bodies' velocities (Batty et al. 2007), their joints and contacts
+  // kept, and in the projection scheme the bodies take them: its own. With held loads a body held
+  // by a contact is immobile to the projection and takes no load (docs/architecture.md).
+  entry.schemes = {"projection", "held-loads"};
   return entry;
 }
 
