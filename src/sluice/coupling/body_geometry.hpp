@@ -62,6 +62,11 @@ class BodyGeometry {
     }
     return w;
   }
+  // joined_mobility() without the contacts that `impulse` (6 per body, as W's rows) would pull
+  // apart: a contact holds a body back from what it stands on, never onto it.
+  virtual Eigen::MatrixXd joined_mobility(const Eigen::VectorXd& /*impulse*/) const {
+    return joined_mobility();
+  }
 };
 
 }  // namespace sluice

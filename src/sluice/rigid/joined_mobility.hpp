@@ -21,4 +21,10 @@ namespace sluice {
 // moves nothing.
 Eigen::MatrixXd joined_mobility(const std::vector<Mat6>& own, const RowGroup& joints);
 
+// The rows' impulses lambda that keep their velocities while `impulse` (6 per body) acts:
+// J M^-1 (impulse + J^T lambda) = 0, the least-squares lambda where rows are redundant. A row's
+// impulse acts along its Jacobian on body b (on a, against it).
+std::vector<Real> row_impulses(const std::vector<Mat6>& own, const RowGroup& rows,
+                               const Eigen::VectorXd& impulse);
+
 }  // namespace sluice

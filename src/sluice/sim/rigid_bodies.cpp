@@ -249,6 +249,10 @@ BodyMobility RigidBodies::mobility(std::size_t b) const {
 }
 
 Eigen::MatrixXd RigidBodies::joined_mobility() const {
+  return joined_mobility(Eigen::VectorXd());
+}
+
+Eigen::MatrixXd RigidBodies::joined_mobility(const Eigen::VectorXd& impulse) const {
   std::vector<Mat6> own(count(), Mat6::Zero());
   for (std::size_t b = 0; b < count(); ++b) {
     const BodyMobility m = own_mobility(b);
@@ -260,6 +264,7 @@ Eigen::MatrixXd RigidBodies::joined_mobility() const {
   for (const Joint& joint : system_.rigid().joints()) {
     add_joint_rows(joint, system_.bodies(), 1.0, 0.0, rows);
   }
+  const std::size_t joint_rows = rows.size();
   // Each touching pair of surface particles keeps its normal velocity for the step, as a joint
   // would: the pressure moves no body into what holds it (a wheel into the bed), and lets it
   // roll, slide or turn along it; the contact's own force and friction act in the bodies'
@@ -272,7 +277,15 @@ Eigen::MatrixXd RigidBodies::joined_mobility() const {
       rows.add_row(contact_rows(c.a, c.b, p.normal, p.point - xa, p.point - xb)[0]);
     }
   }
-  return sluice::joined_mobility(own, rows);
+  if (impulse.size() == 0 || rows.size() == joint_rows) return sluice::joined_mobility(own, rows);
+  // The rows' impulses that would hold the bodies' row velocities against `impulse`; a contact
+  // row whose impulse pulls its bodies together lets go (water squeezed under a wheel lifts it).
+  const std::vector<Real> held = row_impulses(own, rows, impulse);
+  RowGroup kept;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (r < joint_rows || held[r] >= 0) kept.add_row(rows.rows()[r]);
+  }
+  return sluice::joined_mobility(own, kept);
 }
 
 std::vector<BodyPoint> RigidBodies::points_under_surface(int layers) const {

@@ -42,6 +42,7 @@ class RigidBodies final : public BodyGeometry {
   std::vector<BodyKinematics> motion() const override;
   BodyMobility mobility(std::size_t b) const override;
   Eigen::MatrixXd joined_mobility() const override;
+  Eigen::MatrixXd joined_mobility(const Eigen::VectorXd& impulse) const override;
   std::vector<BodyPoint> points_under_surface(int layers) const override;
   std::vector<BodyPoint> surface_points() const override;
   std::vector<Vec3> surface_normals() const override;

@@ -82,5 +82,27 @@ TEST(JoinedMobility, ARevoluteJointToTheWorldLeavesTheTurnAboutItsAxis) {
   EXPECT_NEAR(dv[4], 0.7 / (4.0 * 0.04 / 6), 1e-9);
 }
 
+// A cube on the world's floor, one row along +z at its centre: pushed down by 2 N s, the row
+// holds it with +2 N s (it pushes back); pushed up, with -2 N s (it would have to pull). Two
+// rows on the same velocity share the impulse (the least-squares answer).
+TEST(JoinedMobility, RowImpulsesHoldTheRowsVelocities) {
+  const std::vector<Mat6> own = {Mat6::Identity() / 4.0};
+  ConstraintRow floor;
+  floor.a = 1;  // the world
+  floor.b = 0;
+  floor.linear_b = Vec3::UnitZ();
+  floor.linear_a = -Vec3::UnitZ();
+  RowGroup rows;
+  rows.add_row(floor);
+  Eigen::VectorXd down = Eigen::VectorXd::Zero(6);
+  down[2] = -2;
+  EXPECT_NEAR(row_impulses(own, rows, down)[0], 2, 1e-12);
+  EXPECT_NEAR(row_impulses(own, rows, -down)[0], -2, 1e-12);
+  rows.add_row(floor);
+  const std::vector<Real> shared = row_impulses(own, rows, down);
+  EXPECT_NEAR(shared[0], 1, 1e-12);
+  EXPECT_NEAR(shared[1], 1, 1e-12);
+}
+
 }  // namespace
 }  // namespace sluice

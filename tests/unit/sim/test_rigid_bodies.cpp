@@ -129,8 +129,8 @@ TEST(RigidBodies, NearestSurfaceOfABodyAndOfTheWalls) {
 // The grid's projection moves the bodies through their joined mobility W (projection scheme).
 // A box resting on the floor keeps its contact pairs' normal velocities there, as a joint
 // would: W answers a downward push with nothing and a push along the floor, at its centre of
-// mass, as a free body would. For the held loads, which have no such rows, a body held by a
-// contact is immobile.
+// mass, as a free body would; a contact lets go where it would pull. For the held loads, which
+// have no such rows, a body held by a contact is immobile.
 TEST(RigidBodies, ABoxOnTheFloorMovesAlongItButNotIntoIt) {
   RigidBodies bodies(
       case_with("  - {shape: box, size: [0.2, 0.2, 0.2], density: 500, position: [0.5, 0.5, "
@@ -151,6 +151,14 @@ TEST(RigidBodies, ABoxOnTheFloorMovesAlongItButNotIntoIt) {
   Eigen::VectorXd free = Eigen::VectorXd::Zero(6);
   free[0] = 1 / mass;
   EXPECT_LT((w * push - free).norm(), 1e-9 / mass);
+  // Given the impulse it will answer, a contact that would have to pull the box onto the floor
+  // lets go: pushed up, the box rises as a free body; pushed down, the floor still holds it.
+  push.setZero();
+  push[2] = 1;
+  Eigen::VectorXd up = Eigen::VectorXd::Zero(6);
+  up[2] = 1 / mass;
+  EXPECT_LT((bodies.joined_mobility(push) * push - up).norm(), 1e-9 / mass);
+  EXPECT_LT((bodies.joined_mobility(-push) * push).norm(), 1e-9 / mass);
   const BodyMobility held = bodies.mobility(0);
   EXPECT_EQ(held.inverse_mass, Eigen::Matrix3d::Zero());
   EXPECT_EQ(held.inverse_inertia, Eigen::Matrix3d::Zero());

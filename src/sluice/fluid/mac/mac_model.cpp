@@ -164,10 +164,34 @@ void MacModel<D>::project(double dt, bool moving) {
     bodies[b].velocity -= dt * bodies[b].mobility * last;
   }
   const bool joined = moving && solves_body_velocities_ && !bodies.empty();
-  const Eigen::MatrixXd mobility = joined ? geometry_.joined_mobility() : Eigen::MatrixXd();
-  last_projection_ =
-      projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_, now_.u,
-                          now_.pressure, valid_, bodies, joined ? &mobility : nullptr);
+  if (!joined) {
+    last_projection_ = projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_,
+                                           now_.u, now_.pressure, valid_, bodies);
+  } else {
+    // The bodies' contacts hold as joints through the solve; where the pressure it gives would
+    // have a contact pull a body onto what it stands on (water squeezed under a wheel), that
+    // contact lets go and the solve is made again from the same state.
+    const FaceField<D> u = now_.u;
+    const CellField pressure = now_.pressure;
+    const FaceMarks<D> valid = valid_;
+    const std::vector<ProjectedBody> before = bodies;
+    const Eigen::MatrixXd mobility = geometry_.joined_mobility();
+    last_projection_ = projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_,
+                                           now_.u, now_.pressure, valid_, bodies, &mobility);
+    Eigen::VectorXd impulse(6 * static_cast<Eigen::Index>(bodies.size()));
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      impulse.segment<6>(6 * static_cast<Eigen::Index>(b)) = dt * bodies[b].load;
+    const Eigen::MatrixXd released = geometry_.joined_mobility(impulse);
+    if (released != mobility) {
+      now_.u = u;
+      now_.pressure = pressure;
+      valid_ = valid;
+      bodies = before;
+      last_projection_ = projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_,
+                                             now_.u, now_.pressure, valid_, bodies, &released);
+      releases_ += 1;
+    }
+  }
   solved_velocities_.clear();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     loads_[b].force = bodies[b].load.head<3>();
@@ -388,6 +412,7 @@ std::vector<std::pair<std::string, double>> MacModel<D>::counters() const {
   return {{"pressure solves", projections_},
           {"pressure iterations", pressure_iterations_},
           {"unconverged pressure solves", unconverged_},
+          {"pressure solves made again without a contact", releases_},
           {"marker particles", static_cast<double>(surface_.marker_count())}};
 }
 
@@ -396,7 +421,7 @@ void MacModel<D>::archive_state(StateArchive& a) {
   a(now_.u, now_.pressure, valid_, motion_, loads_);
   projection_.archive_state(a);
   surface_.archive_state(a);
-  a(projections_, pressure_iterations_, unconverged_);
+  a(projections_, pressure_iterations_, unconverged_, releases_);
   // Not carry_through: that would move the surface, which the checkpoint holds as it was.
   if (a.reading() && !motion_.empty()) solid_.place_bodies(motion_);
 }

@@ -108,6 +108,7 @@ class MacModel : public FluidSystem,
   double last_good_time_ = 0;
   ProjectionReport last_projection_;
   double projections_ = 0, pressure_iterations_ = 0, unconverged_ = 0;
+  double releases_ = 0;  // projections made again with a contact let go
 };
 
 }  // namespace sluice
