@@ -98,7 +98,7 @@ def spacing_table(results, spacing):
     lines = ["| model | reached [s] | mean drag [N] | peak drag [N] | mean lift [N] | peak lift "
              "[N] | wave at 2 / 3 / 4 m [mm] | steps | wall s per simulated s (threads) |",
              "|---|---|---|---|---|---|---|---|---|"]
-    for (model, s), f in results.items():
+    for (model, s), f in sorted(results.items(), key=lambda item: MODELS.index(item[0][0])):
         if s != spacing:
             continue
         if f is None:
