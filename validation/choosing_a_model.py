@@ -69,7 +69,7 @@ def f3_cell(model, prefix):
 
 def b5_cells(model, prefix):
     """The mean drags and the wall time; a run that stopped says where, and for mac the
-    prescribed vehicle's figures follow (its jointed vehicle does not reach 2 s)."""
+    prescribed vehicle's figures follow (its wheels roll on the bed; the prescribed ones slide)."""
     drags, wall = [], "–"
     for spacing in fording_convergence.SPACINGS:
         f = fording_convergence.figures(os.path.join(ROOT, f"{prefix}_{model}_{spacing:g}"),
