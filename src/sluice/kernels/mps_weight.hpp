@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -15,7 +16,7 @@ namespace sluice {
 struct MpsWeight {
   Real re = 0;
 
-  Real operator()(Real r) const {
+  SLUICE_HOST_DEVICE Real operator()(Real r) const {
     if (r >= re) return 0;
     return re / std::max(r, 1e-6 * re) - 1;
   }

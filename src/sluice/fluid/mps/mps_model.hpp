@@ -17,16 +17,13 @@
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/mps/body_surface_pressure.hpp"
+#include "sluice/fluid/mps/mps_loop_bodies.hpp"
 #include "sluice/fluid/mps/mps_operators.hpp"
 #include "sluice/fluid/mps/mps_parameters.hpp"
 #include "sluice/fluid/mps/pressure_equation.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 
 namespace sluice {
-
-// What an MPS particle is: fluid, boundary (wall or body particle in the pressure equation) or
-// dummy (behind the boundary, in the number density only).
-enum MpsRole : std::int32_t { kMpsFluid = 0, kMpsBoundary = 1, kMpsDummy = 2 };
 
 // A skin around r_e in the cell grid and neighbour list: the list built at the predicted
 // positions still holds every neighbour after the pressure correction moves the particles.
@@ -113,8 +110,8 @@ class MpsModel final : public ParticleFluid<D> {
 
   // For tests: the operators over the present neighbour list, and the last solve.
   MpsOperators<D> operators() const {
-    return MpsOperators<D>(this->state().particles.position, neighbours_, weight_, lattice_,
-                           laplacian_weight_, laplacian_lattice_, p_.gradient_correction);
+    return MpsOperators<D>(this->state().particles.position.data(), neighbours_.view(), weight_,
+                           lattice_, laplacian_weight_, laplacian_lattice_, p_.gradient_correction);
   }
   const MpsLatticeConstants& lattice() const { return lattice_; }
   const PressureEquationReport& last_solve() const { return equation_.report(); }
@@ -225,68 +222,50 @@ class MpsModel final : public ParticleFluid<D> {
     });
   }
 
+  // The arrays of the host's particle set and the model's own, as the loop bodies see them
+  // (mps_loop_bodies.hpp); the model's per-particle arrays sized to the set.
+  MpsArrays<D> arrays() {
+    auto& ps = this->state().particles;
+    active_.resize(ps.size());
+    velocity_scratch_.resize(ps.size());
+    MpsArrays<D> a;
+    a.position = ps.position.data();
+    a.velocity = ps.velocity.data();
+    a.pressure = ps.pressure.data();
+    a.kind = reinterpret_cast<const std::int32_t*>(ps.kind.data());
+    a.body_point = ps.body_point.data();
+    a.role = ps[role_].data();
+    a.number_density = ps[number_density_].data();
+    a.surface = ps[surface_].data();
+    a.active = active_.data();
+    a.scratch = velocity_scratch_.data();
+    return a;
+  }
+
   // u* = u + dt (g + nu lap u), x* = x + dt u*. Walls and bodies are no-slip: their own
   // velocities enter the viscous Laplacian. Then the collisions.
   void predict(Real dt) {
-    auto& s = this->state();
-    auto& ps = s.particles;
-    const MpsOperators<D> op = operators();
-    const auto& role = ps[role_];
+    const auto& s = this->state();
     // The explicit variant's pressure waves need damping: an artificial viscosity
     // alpha c0 l0 on top of the fluid's own.
     const Real nu = s.kinematic_viscosity +
                     (explicit_variant() ? p_.artificial_viscosity * p_.sound_speed * s.spacing : 0);
-    velocity_scratch_.resize(ps.size());
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      velocity_scratch_[i] = ps.velocity[i];
-      if (!ps.is_fluid(i)) return;
-      Vec<D> a = s.gravity;
-      if (nu > 0) {
-        a += nu * op.laplacian(i, ps.velocity, [&](std::size_t j) { return role[j] != kMpsDummy; });
-      }
-      velocity_scratch_[i] += dt * a;
-    });
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      ps.velocity[i] = velocity_scratch_[i];
-      ps.position[i] += dt * ps.velocity[i];
-    });
+    const MpsArrays<D> a = arrays();
+    const std::size_t n = s.particles.size();
+    exec::Default::for_each_balanced(n, MpsPrediction<D>{a, operators(), s.gravity, nu, dt});
+    exec::Default::for_each(n, MpsTakeVelocity<D>{a, dt});
     collide(dt);
   }
 
-  // Fluid particles closer than collision_distance l0 that approach each other exchange the
-  // approaching part of their relative velocity with restitution e (Koshizuka et al. 1998;
-  // Lee et al. 2011): a guard against the clustering that MPS's pressure cannot resolve.
-  // Walls and bodies count as infinitely heavy. Each particle gathers its own change.
+  // The collisions of mps_loop_bodies.hpp, within collision_distance l0.
   void collide(Real dt) {
     if (p_.collision_distance <= 0) return;
-    auto& ps = this->state().particles;
-    const auto& role = ps[role_];
     const Real reach = p_.collision_distance * this->state().spacing;
-    const Real reach2 = reach * reach;
-    const Real e = p_.collision_restitution;
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      velocity_scratch_[i] = Vec<D>::Zero();
-      if (!ps.is_fluid(i)) return;
-      Vec<D> change = Vec<D>::Zero();
-      neighbours_.for_each(i, [&](std::size_t j) {
-        if (role[j] == kMpsDummy) return;
-        const Vec<D> r = ps.position[j] - ps.position[i];
-        const Real r2 = r.squaredNorm();
-        if (r2 >= reach2 || r2 <= 0) return;
-        const Vec<D> normal = r / std::sqrt(r2);
-        const Real approach = (ps.velocity[i] - ps.velocity[j]).dot(normal);
-        if (approach <= 0) return;
-        const Real share = ps.is_fluid(j) ? 0.5 : 1.0;  // equal masses, or a wall
-        change -= share * (1 + e) * approach * normal;
-      });
-      velocity_scratch_[i] = change;
-    });
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      ps.velocity[i] += velocity_scratch_[i];
-      ps.position[i] += dt * velocity_scratch_[i];
-    });
+    const MpsArrays<D> a = arrays();
+    const std::size_t n = this->state().particles.size();
+    exec::Default::for_each_balanced(
+        n, MpsCollision<D>{a, neighbours_.view(), reach * reach, p_.collision_restitution});
+    exec::Default::for_each(n, MpsAddVelocity<D>{a, dt});
   }
 
   // Number density n*, and the free surface: n* < beta n0, confirmed by fewer neighbours than
@@ -294,30 +273,11 @@ class MpsModel final : public ParticleFluid<D> {
   // whose density dips is not taken for a surface one. Wall particles that no fluid particle
   // reaches are inactive: no pressure, and out of the fluid's operators.
   void find_surface() {
-    auto& ps = this->state().particles;
-    const MpsOperators<D> op = operators();
-    const auto& role = ps[role_];
-    auto& n = ps[number_density_];
-    auto& surface = ps[surface_];
-    active_.assign(ps.size(), 0);
-    const Real dense = p_.surface_threshold * lattice_.n0;
-    const Real crowded = p_.surface_count_ratio * lattice_.neighbours;
-    const auto all = [](std::size_t) { return true; };
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      surface[i] = 0;
-      n[i] = 0;
-      if (role[i] == kMpsDummy && !extrapolated_walls()) return;
-      int count = 0;
-      n[i] = op.number_density(i, all, count);
-      surface[i] = (n[i] < dense && count < crowded) ? 1 : 0;
-      bool reached = role[i] == kMpsFluid;
-      if (!reached) {
-        op.number_density(
-            i, [&](std::size_t j) { return role[j] == kMpsFluid; }, count);
-        reached = count > 0;
-      }
-      active_[i] = reached ? 1 : 0;
-    });
+    const MpsArrays<D> a = arrays();
+    exec::Default::for_each_balanced(
+        this->state().particles.size(),
+        MpsNumberDensity<D>{a, operators(), p_.surface_threshold * lattice_.n0,
+                            p_.surface_count_ratio * lattice_.neighbours, extrapolated_walls()});
   }
 
   PressureEquationInputs<D> inputs(Real dt) {
@@ -326,18 +286,15 @@ class MpsModel final : public ParticleFluid<D> {
     if (extrapolated_walls()) {
       // Each wall and body particle: whether the fluid reaches it, g - a_w, and its velocity
       // carried on by dt (g - a_w) for the fluid's divergence (pressure_equation.hpp).
-      extrapolated_.assign(ps.size(), 0);
-      wall_gravity_.assign(ps.size(), Vec<D>::Zero());
-      source_velocity_ = ps.velocity;
-      exec::Default::for_each(ps.size(), [&](std::size_t i) {
-        if (ps.is_fluid(i)) return;
-        extrapolated_[i] = active_[i];
-        const std::int32_t k = ps.body_point[i];
-        Vec<D> g = s.gravity;
-        if (k >= 0) g -= from_3d<D>(s.body_point_acceleration[static_cast<std::size_t>(k)]);
-        wall_gravity_[i] = g;
-        source_velocity_[i] += dt * g;
-      });
+      extrapolated_.resize(ps.size());
+      wall_gravity_.resize(ps.size());
+      source_velocity_.resize(ps.size());
+      const auto& acceleration = s.body_point_acceleration;
+      exec::Default::for_each(
+          ps.size(),
+          MpsWallInputs<D>{arrays(), acceleration.empty() ? nullptr : acceleration.front().data(),
+                           s.gravity, dt, extrapolated_.data(), wall_gravity_.data(),
+                           source_velocity_.data()});
     }
     PressureEquationInputs<D> in{operators(),
                                  extrapolated_walls() ? source_velocity_ : ps.velocity,
@@ -376,54 +333,30 @@ class MpsModel final : public ParticleFluid<D> {
     clamp_negative();
   }
 
-  // Explicit variant: p = c0^2 rho0 (n* - n0) / n0 (Shakibaeinia & Jin 2010), zero on the
-  // surface and on inactive boundary particles.
+  // Explicit variant: the equation of state (mps_loop_bodies.hpp).
   void pressure_from_density() {
-    auto& ps = this->state().particles;
-    const auto& n = ps[number_density_];
-    const auto& surface = ps[surface_];
     const Real stiffness = p_.sound_speed * p_.sound_speed * density_ / lattice_.n0;
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      const bool free = active_[i] == 0 || surface[i] != 0;
-      ps.pressure[i] = free ? 0 : stiffness * (n[i] - lattice_.n0);
-    });
+    exec::Default::for_each(this->state().particles.size(),
+                            MpsStateEquation<D>{arrays(), stiffness, lattice_.n0});
     clamp_negative();
   }
 
   void clamp_negative() {
     if (p_.keep_negative_pressure) return;
-    auto& ps = this->state().particles;
-    exec::Default::for_each(
-        ps.size(), [&](std::size_t i) { ps.pressure[i] = std::max<Real>(ps.pressure[i], 0); });
+    exec::Default::for_each(this->state().particles.size(), MpsClampPressure<D>{arrays()});
   }
 
   // u = u* - dt / rho grad p, x = x* + dt (u - u*).
   void correct(Real dt) {
-    auto& ps = this->state().particles;
-    const MpsOperators<D> op = operators();
-    const auto& surface = ps[surface_];
-    const Real scale = dt / density_;
-    const auto& n = ps[number_density_];
-    const Real full = p_.minimum_density * lattice_.n0;
-    velocity_scratch_.resize(ps.size());
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      velocity_scratch_[i] =
-          -scale * op.gradient(
-                       i, ps.pressure, [&](std::size_t j) { return pressure_neighbour(j); },
-                       surface[i] != 0, !(n[i] < full));
-    });
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      ps.velocity[i] += velocity_scratch_[i];
-      ps.position[i] += dt * velocity_scratch_[i];
-    });
+    const MpsArrays<D> a = arrays();
+    const std::size_t n = this->state().particles.size();
+    exec::Default::for_each_balanced(n, MpsPressureCorrection<D>{a, operators(), dt / density_,
+                                                                 p_.minimum_density * lattice_.n0});
+    exec::Default::for_each(n, MpsAddVelocity<D>{a, dt});
   }
 
   void measure_extremes() {
-    const auto& ps = this->state().particles;
-    max_speed_ = exec::Default::max_of(
-        ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? ps.velocity[i].norm() : 0.0; });
+    max_speed_ = exec::Default::max_of(this->state().particles.size(), MpsFluidSpeed<D>{arrays()});
   }
 
   MpsParameters p_;

@@ -18,22 +18,30 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sluice/exec/host_device.hpp"
 #include "sluice/fluid/mps/neighbour_list.hpp"
 #include "sluice/kernels/mps_weight.hpp"
 
 namespace sluice {
 
+// Over plain arrays (positions, the neighbour list's view), so that a loop body on the host or on
+// a device applies them the same way (mps_loop_bodies.hpp).
 template <int D>
 class MpsOperators {
  public:
   MpsOperators(const std::vector<Vec<D>>& positions, const NeighbourList<D>& neighbours,
                MpsWeight weight, MpsLatticeConstants lattice, bool gradient_correction = true)
-      : MpsOperators(positions, neighbours, weight, lattice, weight, lattice, gradient_correction) {
-  }
+      : MpsOperators(positions.data(), neighbours.view(), weight, lattice, weight, lattice,
+                     gradient_correction) {}
   // With a Laplacian of its own, wider radius (Koshizuka & Oka 1996: 2.1 l0 for the number
   // density and the gradient, 4.0 l0 for the Laplacian).
   MpsOperators(const std::vector<Vec<D>>& positions, const NeighbourList<D>& neighbours,
                MpsWeight weight, MpsLatticeConstants lattice, MpsWeight laplacian_weight,
+               MpsLatticeConstants laplacian_lattice, bool gradient_correction)
+      : MpsOperators(positions.data(), neighbours.view(), weight, lattice, laplacian_weight,
+                     laplacian_lattice, gradient_correction) {}
+  MpsOperators(const Vec<D>* positions, NeighbourView neighbours, MpsWeight weight,
+               MpsLatticeConstants lattice, MpsWeight laplacian_weight,
                MpsLatticeConstants laplacian_lattice, bool gradient_correction)
       : corrected_(gradient_correction),
         x_(positions),
@@ -44,19 +52,21 @@ class MpsOperators {
         laplacian_factor_(2.0 * D / (laplacian_lattice.lambda * laplacian_lattice.n0)),
         vector_factor_(D / lattice.n0) {}
 
-  const MpsLatticeConstants& lattice() const { return lattice_; }
-  const NeighbourList<D>& neighbours() const { return neighbours_; }
-  const Vec<D>& position(std::size_t i) const { return x_[i]; }
+  SLUICE_HOST_DEVICE const MpsLatticeConstants& lattice() const { return lattice_; }
+  SLUICE_HOST_DEVICE const NeighbourView& neighbours() const { return neighbours_; }
+  SLUICE_HOST_DEVICE const Vec<D>& position(std::size_t i) const { return x_[i]; }
   // w_ij, the weight of j in i's number density.
-  Real weight(std::size_t i, std::size_t j) const { return w_((x_[j] - x_[i]).norm()); }
+  SLUICE_HOST_DEVICE Real weight(std::size_t i, std::size_t j) const {
+    return w_((x_[j] - x_[i]).norm());
+  }
   // The coefficient of (f_j - f_i) in the Laplacian: 2d / (lambda n0) w_ij.
-  Real laplacian_coefficient(std::size_t i, std::size_t j) const {
+  SLUICE_HOST_DEVICE Real laplacian_coefficient(std::size_t i, std::size_t j) const {
     return laplacian_factor_ * laplacian_w_((x_[j] - x_[i]).norm());
   }
 
   // The number density and how many neighbours lie within r_e.
   template <class Include>
-  Real number_density(std::size_t i, Include&& include, int& count) const {
+  SLUICE_HOST_DEVICE Real number_density(std::size_t i, Include&& include, int& count) const {
     Real n = 0;
     count = 0;
     neighbours_.for_each(i, [&](std::size_t j) {
@@ -70,16 +80,20 @@ class MpsOperators {
   }
 
   template <class T, class Include>
-  T laplacian(std::size_t i, const std::vector<T>& f, Include&& include) const {
+  SLUICE_HOST_DEVICE T laplacian(std::size_t i, const T* f, Include&& include) const {
     T sum = f[i] - f[i];  // zero of the field's type
     neighbours_.for_each(i, [&](std::size_t j) {
       if (include(j)) sum += (f[j] - f[i]) * laplacian_w_((x_[j] - x_[i]).norm());
     });
     return laplacian_factor_ * sum;
   }
+  template <class T, class Include>
+  T laplacian(std::size_t i, const std::vector<T>& f, Include&& include) const {
+    return laplacian(i, f.data(), include);
+  }
 
   template <class Include>
-  Real divergence(std::size_t i, const std::vector<Vec<D>>& u, Include&& include) const {
+  SLUICE_HOST_DEVICE Real divergence(std::size_t i, const Vec<D>* u, Include&& include) const {
     Real sum = 0;
     neighbours_.for_each(i, [&](std::size_t j) {
       if (!include(j)) return;
@@ -90,13 +104,17 @@ class MpsOperators {
     });
     return vector_factor_ * sum;
   }
+  template <class Include>
+  Real divergence(std::size_t i, const std::vector<Vec<D>>& u, Include&& include) const {
+    return divergence(i, u.data(), include);
+  }
 
   // `plain`: the d / n0 form even where the corrective matrix is on (free-surface particles,
   // whose one-sided neighbourhood the matrix would turn into an outsized push). `minimum`:
   // measured against p^_i; else against p_i.
   template <class Include>
-  Vec<D> gradient(std::size_t i, const std::vector<Real>& p, Include&& include, bool plain = false,
-                  bool minimum = true) const {
+  SLUICE_HOST_DEVICE Vec<D> gradient(std::size_t i, const Real* p, Include&& include,
+                                     bool plain = false, bool minimum = true) const {
     Real lowest = p[i];
     if (minimum)
       neighbours_.for_each(i, [&](std::size_t j) {
@@ -121,11 +139,16 @@ class MpsOperators {
       return moment.inverse() * sum;
     return vector_factor_ * sum;
   }
+  template <class Include>
+  Vec<D> gradient(std::size_t i, const std::vector<Real>& p, Include&& include, bool plain = false,
+                  bool minimum = true) const {
+    return gradient(i, p.data(), include, plain, minimum);
+  }
 
  private:
   bool corrected_;
-  const std::vector<Vec<D>>& x_;
-  const NeighbourList<D>& neighbours_;
+  const Vec<D>* x_;
+  NeighbourView neighbours_;
   MpsWeight w_, laplacian_w_;
   MpsLatticeConstants lattice_;
   Real laplacian_factor_;

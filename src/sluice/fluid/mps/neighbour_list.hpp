@@ -9,10 +9,23 @@
 #include <cstdint>
 #include <vector>
 
+#include "sluice/exec/host_device.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 
 namespace sluice {
+
+// A neighbour list as plain arrays, for loop bodies on the host or a device: row i's
+// neighbours are index[start[i]] ... index[start[i + 1] - 1], in increasing index.
+struct NeighbourView {
+  const std::uint32_t* start = nullptr;
+  const std::uint32_t* index = nullptr;
+
+  template <class Fn>
+  SLUICE_HOST_DEVICE void for_each(std::size_t i, Fn&& fn) const {
+    for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) fn(static_cast<std::size_t>(index[k]));
+  }
+};
 
 template <int D>
 class NeighbourList {
@@ -52,9 +65,9 @@ class NeighbourList {
   // fn(j) for each neighbour j of i, in increasing index.
   template <class Fn>
   void for_each(std::size_t i, Fn&& fn) const {
-    for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k)
-      fn(static_cast<std::size_t>(index_[k]));
+    view().for_each(i, fn);
   }
+  NeighbourView view() const { return {start_.data(), index_.data()}; }
 
   // Checkpoints: the list is built at the predicted positions, which the particles have left.
   void archive_state(StateArchive& a) { a(start_, index_); }
