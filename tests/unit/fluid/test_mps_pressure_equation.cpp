@@ -43,11 +43,12 @@ struct CompressedBlock {
     PressureEquation<2> equation("cg_diagonal", SolverSettings{1e-12, 1000});
     PressureEquationInputs<2> in{
         MpsOperators<2>(lattice.x, lattice.neighbours, MpsWeight{2.1 * kSpacing}, constants),
-        velocity,
-        number_density,
-        surface,
-        active,
-        pressure};
+        lattice.x.size(),
+        velocity.data(),
+        number_density.data(),
+        surface.data(),
+        active.data(),
+        pressure.data()};
     in.dt = 1e-3;
     in.density = 1000;
     in.relaxation = 0;
@@ -126,18 +127,19 @@ TEST(MpsPressureEquation, ExtrapolatedWallsKeepAClosedBoxHydrostatic) {
                                  SolverSettings{1e-12, 2000});
     PressureEquationInputs<2> in{
         MpsOperators<2>(lattice.x, lattice.neighbours, MpsWeight{2.1 * kSpacing}, constants),
-        extrapolated ? carried : velocity,
-        number_density,
-        surface,
-        extrapolated ? everything : fluid_and_first,
-        hydrostatic};
+        lattice.x.size(),
+        extrapolated ? carried.data() : velocity.data(),
+        number_density.data(),
+        surface.data(),
+        extrapolated ? everything.data() : fluid_and_first.data(),
+        hydrostatic.data()};
     in.dt = dt;
     in.density = rho;
     in.relaxation = 0;
     in.compressibility = 1e-7;  // 1/Pa: fixes the level of a box with no free surface
     if (extrapolated) {
-      in.extrapolated = &wall;
-      in.wall_gravity = &wall_gravity;
+      in.extrapolated = wall.data();
+      in.wall_gravity = wall_gravity.data();
     }
     equation.assemble(in);
     std::vector<Real> pressure(n, 0.0);  // solved from zero, not from the answer

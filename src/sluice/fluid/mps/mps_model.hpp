@@ -296,20 +296,19 @@ class MpsModel final : public ParticleFluid<D> {
                            s.gravity, dt, extrapolated_.data(), wall_gravity_.data(),
                            source_velocity_.data()});
     }
-    PressureEquationInputs<D> in{operators(),
-                                 extrapolated_walls() ? source_velocity_ : ps.velocity,
-                                 ps[number_density_],
-                                 ps[surface_],
-                                 active_,
-                                 ps.pressure};
+    const MpsArrays<D> a = arrays();
+    PressureEquationInputs<D> in{
+        operators(),      ps.size(), extrapolated_walls() ? source_velocity_.data() : a.velocity,
+        a.number_density, a.surface, a.active,
+        a.pressure};
     in.dt = dt;
     in.density = density_;
     in.relaxation = p_.source_relaxation;
     in.compressibility = p_.compressibility;
     in.pressure_memory = p_.pressure_memory;
     if (extrapolated_walls()) {
-      in.extrapolated = &extrapolated_;
-      in.wall_gravity = &wall_gravity_;
+      in.extrapolated = extrapolated_.data();
+      in.wall_gravity = wall_gravity_.data();
     }
     return in;
   }

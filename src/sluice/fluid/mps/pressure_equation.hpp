@@ -34,19 +34,22 @@
 #include <string>
 
 #include "sluice/exec/policy.hpp"
+#include "sluice/fluid/mps/mps_loop_bodies.hpp"
 #include "sluice/fluid/mps/mps_operators.hpp"
 #include "sluice/linear/sparse_solver.hpp"
 
 namespace sluice {
 
+// One entry per particle in each array.
 template <int D>
 struct PressureEquationInputs {
   MpsOperators<D> op;
-  const std::vector<Vec<D>>& velocity;       // u* (walls and bodies: their own)
-  const std::vector<Real>& number_density;   // n*
-  const std::vector<std::int32_t>& surface;  // 1 on the free surface
-  const std::vector<std::uint8_t>& active;   // 1: fluid, or a boundary particle it reaches
-  const std::vector<Real>& pressure;         // p^n, the last step's
+  std::size_t particles = 0;
+  const Vec<D>* velocity = nullptr;       // u* (walls and bodies: their own)
+  const Real* number_density = nullptr;   // n*
+  const std::int32_t* surface = nullptr;  // 1 on the free surface
+  const std::uint8_t* active = nullptr;   // 1: fluid, or a boundary particle it reaches
+  const Real* pressure = nullptr;         // p^n, the last step's
   Real dt = 0;
   Real density = 0;
   Real relaxation = 0;          // gamma
@@ -54,10 +57,84 @@ struct PressureEquationInputs {
   bool pressure_memory = true;  // m: the divergence part's compressibility as a rate
   // 1 for the wall and body particles whose pressure is extrapolated from the fluid around
   // them; nullptr: every active boundary particle has a Poisson row of its own.
-  const std::vector<std::uint8_t>* extrapolated = nullptr;
+  const std::uint8_t* extrapolated = nullptr;
   // With `extrapolated`: g - a_w of each wall and body particle (`velocity` already holds its
   // u_w + dt (g - a_w)).
-  const std::vector<Vec<D>>* wall_gravity = nullptr;
+  const Vec<D>* wall_gravity = nullptr;
+
+  // Whether particle j's pressure is extrapolated from the fluid rather than solved for.
+  SLUICE_HOST_DEVICE bool wall(std::size_t j) const {
+    return extrapolated != nullptr && extrapolated[j] != 0;
+  }
+  // The coefficient of p_j in particle i's row, zero for a particle outside the row: a wall
+  // row, sum_f w_wf (p_w - p_f) = sum_f w_wf rho (g - a_w) . (x_w - x_f) over its fluid
+  // neighbours f; a fluid row, the Laplacian over every active neighbour.
+  SLUICE_HOST_DEVICE Real coefficient(std::size_t i, std::size_t j) const {
+    if (!active[j]) return 0;
+    if (wall(i)) return wall(j) ? 0 : op.weight(i, j);
+    return op.laplacian_coefficient(i, j);
+  }
+};
+
+// The entries of row r (particle i): the diagonal and the unknown neighbours in reach
+// (row_of[j] >= 0), into count[r + 1].
+template <int D>
+struct PressureRowCount {
+  PressureEquationInputs<D> in;
+  const int* row_of;
+  const std::size_t* particle_of;
+  int* count;
+  SLUICE_HOST_DEVICE void operator()(std::size_t r) const {
+    const std::size_t i = particle_of[r];
+    int entries = 0;
+    in.op.neighbours().for_each(i, [&](std::size_t j) {
+      if (row_of[j] >= 0 && in.coefficient(i, j) > 0) ++entries;
+    });
+    count[r + 1] = entries + 1;
+  }
+};
+
+// Row r's values, from start[r] on, its columns in increasing order, and its right-hand side.
+template <int D>
+struct PressureRowValues {
+  PressureEquationInputs<D> in;
+  const int* row_of;
+  const std::size_t* particle_of;
+  const int* start;
+  int* column;
+  double* value;
+  double* rhs;
+  Real density_source, divergence_source, compressibility, memory;
+  SLUICE_HOST_DEVICE void operator()(std::size_t r) const {
+    const std::size_t i = particle_of[r];
+    const MpsOperators<D>& op = in.op;
+    int k = start[r];
+    int diagonal = -1;
+    Real sum = 0, source = 0;
+    const bool wall = in.wall(i);
+    op.neighbours().for_each(i, [&](std::size_t j) {
+      const Real c = in.coefficient(i, j);
+      if (c <= 0) return;
+      if (wall) source += c * in.density * in.wall_gravity[i].dot(op.position(i) - op.position(j));
+      sum += c;
+      if (row_of[j] < 0) return;  // p_j = 0 on the surface: only the diagonal sees it
+      if (diagonal < 0 && j > i) diagonal = k++;
+      column[k] = row_of[j];
+      value[k++] = -c;
+    });
+    if (diagonal < 0) diagonal = k++;
+    column[diagonal] = static_cast<int>(r);
+    if (wall) {
+      value[diagonal] = sum;
+      rhs[r] = source;
+      return;
+    }
+    const Real n0 = op.lattice().n0;
+    value[diagonal] = sum + compressibility;
+    rhs[r] = density_source * (in.number_density[i] - n0) / n0 -
+             divergence_source * op.divergence(i, in.velocity, MpsEveryNeighbour{}) +
+             memory * in.pressure[i];
+  }
 };
 
 struct PressureEquationReport {
@@ -77,84 +154,41 @@ class PressureEquation {
   }
 
   void assemble(const PressureEquationInputs<D>& in) {
-    const std::size_t n = in.active.size();
-    const auto wall = [&](std::size_t j) {
-      return in.extrapolated != nullptr && (*in.extrapolated)[j] != 0;
-    };
+    const std::size_t n = in.particles;
     // Unknowns numbered in particle order, so each row's columns come out sorted.
     row_of_.assign(n, -1);
     int unknowns = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (in.active[i] && (wall(i) || !in.surface[i])) row_of_[i] = unknowns++;
+      if (in.active[i] && (in.wall(i) || !in.surface[i])) row_of_[i] = unknowns++;
     }
     particle_of_.resize(static_cast<std::size_t>(unknowns));
     for (std::size_t i = 0; i < n; ++i) {
       if (row_of_[i] >= 0) particle_of_[static_cast<std::size_t>(row_of_[i])] = i;
     }
-    const MpsOperators<D>& op = in.op;
-    const auto unknown = [&](std::size_t j) { return row_of_[j] >= 0; };
-    // A wall row: sum_f w_wf (p_w - p_f) = sum_f w_wf rho (g - a_w) . (x_w - x_f) over its fluid
-    // neighbours f; a fluid row: the Laplacian over every active neighbour.
-    // The coefficient of p_j in row i, zero for a particle outside the row.
-    const auto coefficient = [&](std::size_t i, std::size_t j) -> Real {
-      if (!in.active[j]) return 0;
-      if (wall(i)) return wall(j) ? 0 : op.weight(i, j);
-      return op.laplacian_coefficient(i, j);
-    };
     // Pass 1: entries per row (the diagonal and the unknown neighbours in reach).
     matrix_.resize(unknowns, unknowns);
     int* start = matrix_.outerIndexPtr();
     start[0] = 0;
-    exec::Default::for_each_balanced(particle_of_.size(), [&](std::size_t r) {
-      const std::size_t i = particle_of_[r];
-      int count = 0;
-      op.neighbours().for_each(i, [&](std::size_t j) {
-        if (unknown(j) && coefficient(i, j) > 0) ++count;
-      });
-      start[r + 1] = count + 1;
-    });
+    exec::Default::for_each_balanced(
+        particle_of_.size(), PressureRowCount<D>{in, row_of_.data(), particle_of_.data(), start});
     for (int r = 0; r < unknowns; ++r) start[r + 1] += start[r];
     matrix_.resizeNonZeros(start[unknowns]);
     rhs_.resize(unknowns);
     // Pass 2: the values, and the right-hand side.
     const Real inverse_dt = 1 / in.dt;
-    const Real density_source = in.relaxation * in.density * inverse_dt * inverse_dt;
-    const Real divergence_source = (1 - in.relaxation) * in.density * inverse_dt;
     const Real compressibility = in.compressibility * in.density * inverse_dt * inverse_dt;
-    const Real memory = in.pressure_memory ? (1 - in.relaxation) * compressibility : 0;
-    const Real n0 = op.lattice().n0;
-    int* column = matrix_.innerIndexPtr();
-    double* value = matrix_.valuePtr();
-    const auto all = [](std::size_t) { return true; };
-    exec::Default::for_each_balanced(particle_of_.size(), [&](std::size_t r) {
-      const std::size_t i = particle_of_[r];
-      int k = start[r];
-      int diagonal = -1;
-      Real sum = 0, source = 0;
-      op.neighbours().for_each(i, [&](std::size_t j) {
-        const Real c = coefficient(i, j);
-        if (c <= 0) return;
-        if (wall(i)) {
-          source += c * in.density * (*in.wall_gravity)[i].dot(op.position(i) - op.position(j));
-        }
-        sum += c;
-        if (row_of_[j] < 0) return;  // p_j = 0 on the surface: only the diagonal sees it
-        if (diagonal < 0 && j > i) diagonal = k++;
-        column[k] = row_of_[j];
-        value[k++] = -c;
-      });
-      if (diagonal < 0) diagonal = k++;
-      column[diagonal] = static_cast<int>(r);
-      if (wall(i)) {
-        value[diagonal] = sum;
-        rhs_[static_cast<Eigen::Index>(r)] = source;
-        return;
-      }
-      value[diagonal] = sum + compressibility;
-      rhs_[static_cast<Eigen::Index>(r)] = density_source * (in.number_density[i] - n0) / n0 -
-                                           divergence_source * op.divergence(i, in.velocity, all) +
-                                           memory * in.pressure[i];
-    });
+    PressureRowValues<D> values{in,
+                                row_of_.data(),
+                                particle_of_.data(),
+                                start,
+                                matrix_.innerIndexPtr(),
+                                matrix_.valuePtr(),
+                                rhs_.data(),
+                                in.relaxation * in.density * inverse_dt * inverse_dt,
+                                (1 - in.relaxation) * in.density * inverse_dt,
+                                compressibility,
+                                in.pressure_memory ? (1 - in.relaxation) * compressibility : 0};
+    exec::Default::for_each_balanced(particle_of_.size(), values);
     report_ = PressureEquationReport{};
     report_.unknowns = particle_of_.size();
     report_.entries = static_cast<std::size_t>(start[unknowns]);
@@ -162,7 +196,8 @@ class PressureEquation {
 
   // Solves from the present `pressure` as the first guess and writes the result back, zero
   // off the unknowns. False when the solver did not reach its tolerance.
-  bool solve(std::vector<Real>& pressure) {
+  bool solve(std::vector<Real>& pressure) { return solve(pressure.data(), pressure.size()); }
+  bool solve(Real* pressure, std::size_t n) {
     guess_.resize(static_cast<Eigen::Index>(particle_of_.size()));
     for (std::size_t r = 0; r < particle_of_.size(); ++r)
       guess_[static_cast<Eigen::Index>(r)] = pressure[particle_of_[r]];
@@ -172,9 +207,8 @@ class PressureEquation {
     report_.iterations = solved.iterations;
     report_.relative_residual = solved.relative_residual;
     report_.converged = solved.converged;
-    exec::Default::for_each(pressure.size(), [&](std::size_t i) {
-      pressure[i] = row_of_[i] >= 0 ? guess_[row_of_[i]] : 0;
-    });
+    exec::Default::for_each(
+        n, [&](std::size_t i) { pressure[i] = row_of_[i] >= 0 ? guess_[row_of_[i]] : 0; });
     return solved.converged;
   }
 
