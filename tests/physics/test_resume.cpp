@@ -98,6 +98,9 @@ const ResumeCase kCases[] = {
      "subcycling_2d.yaml",
      0.2,
      {"spacing=0.02", "model.device=emulated"}},
+    // mps on its device: the neighbour list the next prediction reads, written and read back;
+    // the particles keep the order and cells of their last sort, though they have moved since.
+    {"mps_device_body", "floating_box_2d.yaml", 0.2, {"model={name: mps, device: emulated}"}},
     {"wcsph_3d_cubes", "dam_break_cubes_3.yaml", 0.04, {"spacing=0.05"}},
     {"bodies_alone_joints", "pendulum.yaml", 0.4, {}},
     {"bodies_alone_complementarity", "sphere_stack.yaml", 0.4, {}},

@@ -17,6 +17,7 @@
 #if defined(SLUICE_WITH_CUDA)
 #include "sluice/exec/cuda_backend_check.hpp"
 #endif
+#include "device_run_support.hpp"
 #include "particle_state_of.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/sim/probes.hpp"
@@ -25,64 +26,9 @@
 namespace sluice {
 namespace {
 
-// What a run ends with: the particles (as output sees them), the bodies and their loads.
-template <int D>
-struct RunEnd {
-  std::vector<Vec<D>> position, velocity;
-  std::vector<Real> density, pressure;
-  std::vector<Vec3> body_position, fluid_force;
-  FluidEnergy energy;
-  long steps = 0;
-};
-
-template <int D>
-RunEnd<D> run_to(const io::CaseConfig& config, double end,
-                 const std::function<void(const ParticleSet<D>&)>& after_each_step = {}) {
-  Simulation<D> sim(config);
-  RunEnd<D> out;
-  testing::run_until(sim, end, [&](const StepClock&) {
-    ++out.steps;
-    if (!after_each_step) return;
-    sim.fluid().observation().view();  // the device's copy comes back first, as below
-    after_each_step(testing::particle_state(sim).particles);
-  });
-  out.energy = sim.fluid().observation().energy();  // on a device, summed there
-  sim.fluid().observation().view();  // a reader of the particles: the device's copy comes back
-  const auto& ps = testing::particle_state(sim).particles;
-  out.position = ps.position;
-  out.velocity = ps.velocity;
-  out.density = ps.density;
-  out.pressure = ps.pressure;
-  for (std::size_t b = 0; b < sim.bodies().count(); ++b) {
-    out.body_position.push_back(sim.bodies().state(b).position);
-    out.fluid_force.push_back(sim.coupler().fluid_force()[b]);
-  }
-  return out;
-}
-
-template <int D>
-void expect_same_bits(const std::string& file, const std::vector<std::string>& overrides,
-                      double end) {
-  std::vector<std::string> on_device = overrides;
-  on_device.push_back("model.device=emulated");
-  const RunEnd<D> cpu = run_to<D>(testing::load_case(file, overrides), end);
-  const RunEnd<D> device = run_to<D>(testing::load_case(file, on_device), end);
-  ASSERT_GT(cpu.steps, 10) << file;
-  EXPECT_EQ(device.steps, cpu.steps) << file;
-  ASSERT_EQ(device.position.size(), cpu.position.size()) << file;
-  std::size_t differ = 0;
-  for (std::size_t i = 0; i < cpu.position.size(); ++i) {
-    if (device.position[i] != cpu.position[i] || device.velocity[i] != cpu.velocity[i] ||
-        device.density[i] != cpu.density[i] || device.pressure[i] != cpu.pressure[i])
-      ++differ;
-  }
-  EXPECT_EQ(differ, 0u) << file << ": particles that differ after " << cpu.steps << " steps";
-  EXPECT_EQ(device.body_position, cpu.body_position) << file;
-  EXPECT_EQ(device.fluid_force, cpu.fluid_force) << file;
-  EXPECT_EQ(device.energy.kinetic, cpu.energy.kinetic) << file;
-  EXPECT_EQ(device.energy.potential, cpu.energy.potential) << file;
-  EXPECT_EQ(device.energy.mass, cpu.energy.mass) << file;
-}
+using testing::expect_same_bits;
+using testing::run_to;
+using testing::RunEnd;
 
 TEST(WcsphDevice, EmulatedRunIsTheCpuRunBitForBit) {
   expect_same_bits<2>("dam_break_2d.yaml", {"spacing=0.05"}, 0.3);

@@ -25,11 +25,18 @@ class ParticleDevice {
   virtual double bytes_per_particle() const = 0;
 
   // Copies every field of `host` (whatever its fields: the device's set mirrors the host's
-  // labels) and the body points' accelerations to the device, or back. The device's order is
-  // the host's after an upload; after a download the host holds the device's order, which is
-  // sorted by cell as of the step's neighbour sort.
-  virtual void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) = 0;
+  // labels), the body points' accelerations and the cells of the host's last sort
+  // (`cell_start`, CellList's) to the device, or back. The device's order and cells are the
+  // host's after an upload (read back from a checkpoint, the particles have moved since that
+  // sort, and a sort here could reorder them); after a download the host holds the device's
+  // order, sorted by cell as of the step's neighbour sort.
+  virtual void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration,
+                      const std::vector<std::uint32_t>& cell_start) = 0;
   virtual void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const = 0;
+  // The cells of the device's last sort (CellList's starts), which the downloaded particles
+  // are in: a stage after the sort may move a particle out of its cell (mps's correction), and
+  // the host then reads them as the host's own run would have.
+  virtual void download_cell_starts(std::vector<std::uint32_t>& start) const = 0;
 
   // The neighbour stage: puts back fluid found in a wall's layers (wall_surfaces.hpp), then
   // sorts by cell.

@@ -244,9 +244,10 @@ class ParticleDeviceRun {
   std::size_t fluid_count() const { return fluid_count_; }
   typename Backend::Workspace& workspace() const { return workspace_; }
 
-  // Every field of `host` and the body points' accelerations to the device; then the sort
-  // finds the device's cell starts (the host's set is sorted by cell already).
-  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) {
+  // Every field of `host`, the body points' accelerations and the cells of the host's last sort
+  // to the device, and the lists by kind.
+  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration,
+              const std::vector<std::uint32_t>& cell_start) {
     particles_.upload(host);
     find_fields();
     const std::size_t n = size();
@@ -262,7 +263,8 @@ class ParticleDeviceRun {
     fluid_before_.from_host(&zero, 1);
     if (!point_acceleration.empty())
       point_acceleration_.from_host(point_acceleration.front().data(), 3 * setup_.body_point_count);
-    sort_by_cell();
+    cell_start_.from_host(cell_start.data(), cell_start.size());
+    list_by_kind();
   }
   // The device's fields into `host` (a set of the same fields), in the device's order, and the
   // body points' accelerations.
@@ -270,6 +272,11 @@ class ParticleDeviceRun {
     particles_.download(host);
     if (!point_acceleration.empty())
       point_acceleration_.to_host(point_acceleration.front().data(), 3 * setup_.body_point_count);
+  }
+
+  void download_cell_starts(std::vector<std::uint32_t>& start) const {
+    start.resize(cell_start_.size());
+    cell_start_.to_host(start.data(), start.size());
   }
 
   // The neighbour stage: puts back fluid found in a wall's layers, sorts by cell, and lists the
@@ -440,12 +447,16 @@ class ParticleDeviceOn final : public ParticleDevice<D> {
 
   std::string name() const override { return Backend::name(); }
   double bytes_per_particle() const override { return bytes_per_particle_; }
-  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) override {
-    run_.upload(host, point_acceleration);
+  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration,
+              const std::vector<std::uint32_t>& cell_start) override {
+    run_.upload(host, point_acceleration, cell_start);
     bytes_per_particle_ = ParticleDeviceRun<D, Backend>::bytes_per_particle(host);
   }
   void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
     run_.download(host, point_acceleration);
+  }
+  void download_cell_starts(std::vector<std::uint32_t>& start) const override {
+    run_.download_cell_starts(start);
   }
   void sort_by_cell() override { run_.sort_by_cell(); }
   void set_body_motion(const std::vector<Real>& body_motion) override {

@@ -153,7 +153,7 @@ void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_
 template <int D>
 void ParticleFluid<D>::run_on_device(std::unique_ptr<ParticleDevice<D>> device) {
   device_ = std::move(device);
-  device_->upload(state_.particles, state_.body_point_acceleration);
+  device_->upload(state_.particles, state_.body_point_acceleration, state_.cells.cell_starts());
   host_current_ = false;
 }
 
@@ -170,11 +170,11 @@ void ParticleFluid<D>::refresh_host() const {
   if (!device_ || host_current_) return;
   auto& s = const_cast<ParticleState<D>&>(state_);
   device_->download(s.particles, s.body_point_acceleration);
-  // No stage after the device's sort moves a particle across a cell, so the host's sort finds
-  // them in order (its cell starts are what the probes read), and reorder copies nothing.
-  std::vector<std::uint32_t> order;
-  s.cells.sort(s.particles.position, order);
-  s.particles.reorder(order);
+  // In the device's order, with its cells (what the probes read): a stage after the sort may
+  // have moved a particle out of its cell, and a sort here would reorder the host's set.
+  std::vector<std::uint32_t> start;
+  device_->download_cell_starts(start);
+  s.cells.assign_cell_starts(std::move(start));
   host_current_ = true;
 }
 
@@ -271,7 +271,7 @@ void ParticleFluid<D>::archive_state(StateArchive& a) {
   a.section("model");
   archive_model(a);
   if (device_ && a.reading()) {
-    device_->upload(state_.particles, state_.body_point_acceleration);
+    device_->upload(state_.particles, state_.body_point_acceleration, state_.cells.cell_starts());
     host_current_ = true;
   }
 }

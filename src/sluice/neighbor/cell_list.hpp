@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "sluice/core/state_archive.hpp"
@@ -149,6 +150,10 @@ class CellList {
 
   // Checkpoints: the cells of the last sort (the particles have moved since).
   void archive_state(StateArchive& a) { a(cell_start_); }
+  const std::vector<std::uint32_t>& cell_starts() const { return cell_start_; }
+  // The cells of a sort made elsewhere (a device's, over the same grid): particles of cell c
+  // are [start[c], start[c + 1]).
+  void assign_cell_starts(std::vector<std::uint32_t> start) { cell_start_ = std::move(start); }
 
   // Calls fn(j, r_ij, r2) for every particle j != i with |r_i - r_j|^2 < radius2
   // (r_ij = r_i - r_j). radius2 must not exceed radius()^2.

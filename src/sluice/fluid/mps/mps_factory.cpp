@@ -23,6 +23,7 @@ ModelEntry mps_entry() {
   ModelEntry entry;
   entry.make = make_mps<D>;
   entry.size.bytes_per_element = 800;  // measured: docs/output.md
+  entry.devices = {"cpu", "emulated"};
   return entry;
 }
 

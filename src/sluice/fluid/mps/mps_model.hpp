@@ -17,6 +17,7 @@
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/mps/body_surface_pressure.hpp"
+#include "sluice/fluid/mps/mps_device_run.hpp"
 #include "sluice/fluid/mps/mps_loop_bodies.hpp"
 #include "sluice/fluid/mps/mps_operators.hpp"
 #include "sluice/fluid/mps/mps_parameters.hpp"
@@ -50,7 +51,7 @@ class MpsModel final : public ParticleFluid<D> {
   }
 
   std::string describe() const override {
-    return fmt::format(
+    std::string out = fmt::format(
         "mps ({}): r_e = {:.4g} m ({} dx), n0 = {:.4g}, {}lambda = {:.4g} dx^2, beta = {}, "
         "gamma = {}, alpha = {:.3g} 1/Pa ({} form), negative pressure {}, wall pressure {}, "
         "gradient against the neighbourhood's smallest pressure from n* = {} n0, {}",
@@ -66,6 +67,11 @@ class MpsModel final : public ParticleFluid<D> {
         explicit_variant()
             ? fmt::format("c0 = {:.4g} m/s", p_.sound_speed)
             : fmt::format("solver {} (tolerance {:.3g})", p_.solver, p_.solver_settings.tolerance));
+    if (device_) {
+      out += fmt::format(", on {} ({:.0f} bytes per particle there)", device_->name(),
+                         device_->bytes_per_particle());
+    }
+    return out;
   }
 
   void initialize() override {
@@ -75,6 +81,7 @@ class MpsModel final : public ParticleFluid<D> {
     build_neighbours();
     find_surface();
     measure_extremes();
+    if (p_.emulated_device) start_device();
   }
 
   TimeStep next_time_step() const override {
@@ -114,14 +121,20 @@ class MpsModel final : public ParticleFluid<D> {
                            lattice_, laplacian_weight_, laplacian_lattice_, p_.gradient_correction);
   }
   const MpsLatticeConstants& lattice() const { return lattice_; }
-  const PressureEquationReport& last_solve() const { return equation_.report(); }
+  const PressureEquationReport& last_solve() const {
+    return device_ ? device_->report() : equation_.report();
+  }
   FieldHandle<std::int32_t> role_field() const { return role_; }
 
  protected:
   void archive_model(StateArchive& a) override {
-    neighbours_.archive_state(a);  // the next step's prediction uses the last step's list
+    // The next step's prediction uses the last step's list.
+    if (device_ && !a.reading()) device_->download_neighbours(neighbours_);
+    neighbours_.archive_state(a);
+    if (device_ && a.reading()) device_->upload_neighbours(neighbours_);
     a(max_speed_, failure_, solves_, iterations_, unknowns_);
   }
+
 
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(
@@ -134,8 +147,8 @@ class MpsModel final : public ParticleFluid<D> {
       after.push_back(make_stage<const StepClock>(
           "state_equation", [this](const StepClock&) { pressure_from_density(); }));
     } else {
-      after.push_back(make_stage<const StepClock>(
-          "assembly", [this](const StepClock& c) { equation_.assemble(inputs(c.dt)); }));
+      after.push_back(
+          make_stage<const StepClock>("assembly", [this](const StepClock& c) { assemble(c.dt); }));
       after.push_back(
           make_stage<const StepClock>("solve", [this](const StepClock& c) { solve(c); }));
     }
@@ -152,11 +165,15 @@ class MpsModel final : public ParticleFluid<D> {
     std::vector<double> pressure(points, 0.0);
     std::vector<bool> wet(points, false);
     const auto& role = ps[role_];
+    // On a device the host's set is fresh (the base refreshed it); the activity is the run's.
+    std::vector<std::uint8_t> device_active;
+    if (device_) device_->download_active(device_active);
+    const std::vector<std::uint8_t>& active = device_ ? device_active : active_;
     for (std::size_t i = 0; i < ps.size(); ++i) {
       const std::int32_t k = ps.body_point[i];
       if (k < 0 || role[i] != kMpsBoundary) continue;
       pressure[k] = ps.pressure[i];
-      wet[k] = active_[i] != 0;
+      wet[k] = active[i] != 0;
     }
     surface_pressure_.add_forces(pressure, wet, this->state().body_point_acceleration,
                                  to_3d<D>(this->state().gravity), density_,
@@ -204,6 +221,7 @@ class MpsModel final : public ParticleFluid<D> {
   // gradient reads). A prefix count of fluid over the cell-sorted particles answers that per
   // cell range: dry walls, most of a tall tank, cost nothing.
   void build_neighbours() {
+    if (device_) return this->on_device([&] { device_->build_neighbours(); });
     auto& s = this->state();
     const auto& ps = s.particles;
     const auto& role = ps[role_];
@@ -250,6 +268,7 @@ class MpsModel final : public ParticleFluid<D> {
     // alpha c0 l0 on top of the fluid's own.
     const Real nu = s.kinematic_viscosity +
                     (explicit_variant() ? p_.artificial_viscosity * p_.sound_speed * s.spacing : 0);
+    if (device_) return this->on_device([&] { device_->predict(dt, nu); });
     const MpsArrays<D> a = arrays();
     const std::size_t n = s.particles.size();
     exec::Default::for_each_balanced(n, MpsPrediction<D>{a, operators(), s.gravity, nu, dt});
@@ -273,6 +292,7 @@ class MpsModel final : public ParticleFluid<D> {
   // whose density dips is not taken for a surface one. Wall particles that no fluid particle
   // reaches are inactive: no pressure, and out of the fluid's operators.
   void find_surface() {
+    if (device_) return this->on_device([&] { device_->find_surface(); });
     const MpsArrays<D> a = arrays();
     exec::Default::for_each_balanced(
         this->state().particles.size(),
@@ -313,10 +333,23 @@ class MpsModel final : public ParticleFluid<D> {
     return in;
   }
 
+  void assemble(Real dt) {
+    if (device_) {
+      return this->on_device([&] {
+        device_->assemble(dt, p_.source_relaxation, p_.compressibility, p_.pressure_memory);
+      });
+    }
+    equation_.assemble(inputs(dt));
+  }
+
   void solve(const StepClock& clock) {
-    auto& ps = this->state().particles;
-    const bool solved = equation_.solve(ps.pressure);
-    const PressureEquationReport& r = equation_.report();
+    bool solved = false;
+    if (device_) {
+      this->on_device([&] { solved = device_->solve(); });
+    } else {
+      solved = equation_.solve(this->state().particles.pressure);
+    }
+    const PressureEquationReport& r = last_solve();
     ++solves_;
     iterations_ += r.iterations;
     unknowns_ += r.unknowns;
@@ -335,18 +368,24 @@ class MpsModel final : public ParticleFluid<D> {
   // Explicit variant: the equation of state (mps_loop_bodies.hpp).
   void pressure_from_density() {
     const Real stiffness = p_.sound_speed * p_.sound_speed * density_ / lattice_.n0;
-    exec::Default::for_each(this->state().particles.size(),
-                            MpsStateEquation<D>{arrays(), stiffness, lattice_.n0});
+    if (device_) {
+      this->on_device([&] { device_->state_equation(stiffness); });
+    } else {
+      exec::Default::for_each(this->state().particles.size(),
+                              MpsStateEquation<D>{arrays(), stiffness, lattice_.n0});
+    }
     clamp_negative();
   }
 
   void clamp_negative() {
     if (p_.keep_negative_pressure) return;
+    if (device_) return this->on_device([&] { device_->clamp_negative(); });
     exec::Default::for_each(this->state().particles.size(), MpsClampPressure<D>{arrays()});
   }
 
   // u = u* - dt / rho grad p, x = x* + dt (u - u*).
   void correct(Real dt) {
+    if (device_) return this->on_device([&] { device_->correct(dt); });
     const MpsArrays<D> a = arrays();
     const std::size_t n = this->state().particles.size();
     exec::Default::for_each_balanced(n, MpsPressureCorrection<D>{a, operators(), dt / density_,
@@ -355,7 +394,43 @@ class MpsModel final : public ParticleFluid<D> {
   }
 
   void measure_extremes() {
+    if (device_) {
+      max_speed_ = device_->max_speed();
+      return;
+    }
     max_speed_ = exec::Default::max_of(this->state().particles.size(), MpsFluidSpeed<D>{arrays()});
+  }
+
+  // The device run (model.device: emulated), from the host's particles as initialize() left
+  // them; the base owns it and runs its own services there, the model its stages.
+  void start_device() {
+    const auto& s = this->state();
+    MpsDeviceSetup<D> setup;
+    setup.base = this->device_setup();
+    setup.weight = weight_;
+    setup.laplacian_weight = laplacian_weight_;
+    setup.lattice = lattice_;
+    setup.laplacian_lattice = laplacian_lattice_;
+    setup.gradient_correction = p_.gradient_correction;
+    setup.neighbour_radius = s.cells.radius();
+    setup.extrapolated_walls = extrapolated_walls();
+    setup.collision_reach = p_.collision_distance * s.spacing;
+    setup.collision_restitution = p_.collision_restitution;
+    setup.gravity = s.gravity;
+    setup.density = density_;
+    setup.surface_density = p_.surface_threshold * lattice_.n0;
+    setup.surface_count = p_.surface_count_ratio * lattice_.neighbours;
+    setup.minimum_density = p_.minimum_density * lattice_.n0;
+    setup.solver = p_.solver;
+    setup.solver_settings = p_.solver_settings;
+    std::unique_ptr<MpsDeviceRun<D>> run = make_mps_emulated_run<D>(setup);
+    device_ = run.get();
+    this->run_on_device(std::move(run));
+    // The list the host built; the activity from it, on the device, as the host found it.
+    this->on_device([&] {
+      device_->upload_neighbours(neighbours_);
+      device_->find_surface();
+    });
   }
 
   MpsParameters p_;
@@ -375,6 +450,7 @@ class MpsModel final : public ParticleFluid<D> {
   Real max_speed_ = 0;
   std::optional<std::string> failure_;
   long solves_ = 0, iterations_ = 0, unknowns_ = 0;
+  MpsDeviceRun<D>* device_ = nullptr;  // with model.device: emulated (the base owns it)
 };
 
 }  // namespace sluice

@@ -55,6 +55,8 @@ MpsParameters read_mps_parameters(const io::CaseConfig& config) {
   p.collision_restitution =
       within(model, "collision_restitution", p.collision_restitution, 0, 1, true);
   p.gradient_correction = model.optional<bool>("gradient_correction", p.gradient_correction);
+  p.emulated_device =
+      model.optional_choice("device", "cpu", "device", {"cpu", "emulated"}) == "emulated";
   p.minimum_density = within(model, "gradient_minimum_density", p.minimum_density, 0, 1, true);
   p.artificial_viscosity =
       model.optional_non_negative("artificial_viscosity", p.artificial_viscosity);

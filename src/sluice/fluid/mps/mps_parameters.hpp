@@ -50,6 +50,9 @@ struct MpsParameters {
   // The cap on iterations: at 0.0125 m the 2D dam break's impact on the far wall takes one
   // BiCGSTAB solve past 1000 (236 a solve on average).
   SolverSettings solver_settings{1e-8, 5000};
+  // Where the step's loops run: the host's particle set, or the emulated device's copy of it
+  // (mps_device_run.hpp), which gives the same answer to the bit.
+  bool emulated_device = false;
 };
 
 MpsParameters read_mps_parameters(const io::CaseConfig& config);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "sluice/exec/host_device.hpp"
@@ -88,6 +89,15 @@ class NeighbourList {
     view().for_each(i, fn);
   }
   NeighbourView view() const { return {start_.data(), index_.data()}; }
+
+  // The rows' starts (one more than the rows) and the neighbours, as plain arrays; and a list
+  // made of them (a device's, copied back).
+  const std::vector<std::uint32_t>& starts() const { return start_; }
+  const std::vector<std::uint32_t>& indices() const { return index_; }
+  void assign(std::vector<std::uint32_t> start, std::vector<std::uint32_t> index) {
+    start_ = std::move(start);
+    index_ = std::move(index);
+  }
 
   // Checkpoints: the list is built at the predicted positions, which the particles have left.
   void archive_state(StateArchive& a) { a(start_, index_); }

@@ -38,7 +38,8 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
 
   double bytes_per_particle() const override { return bytes_per_particle_; }
 
-  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration) override {
+  void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration,
+              const std::vector<std::uint32_t>& cell_start) override {
     const std::size_t n = host.size();
     for (auto& a : packed_position_) a.resize(n);
     for (auto& a : packed_velocity_) a.resize(n);
@@ -46,7 +47,7 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     for (auto* a : {&packed_density_, &packed_pressure_, &packed_pressure_term_, &packed_volume_,
                     &packed_fluid_, &packed_viscous_weight_})
       a->resize(n);
-    base_.upload(host, point_acceleration);
+    base_.upload(host, point_acceleration, cell_start);
     find_fields();
     bytes_per_particle_ = wcsph_device_run_bytes_per_particle<D, Backend>(host);
     // The packed copy the host's last rates read, for the bodies' first loads.
@@ -55,6 +56,10 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
 
   void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
     base_.download(host, point_acceleration);
+  }
+
+  void download_cell_starts(std::vector<std::uint32_t>& start) const override {
+    base_.download_cell_starts(start);
   }
 
   void kick_drift(Real dt) override {
