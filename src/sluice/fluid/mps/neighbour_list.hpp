@@ -30,9 +30,11 @@ struct NeighbourView {
 };
 
 // Calls fn(j) for every particle j != i within sqrt(radius2) of particle i, in increasing index
-// (the cells' candidate ranges in order). r^2 has its multiplies and adds fused by hand, so that
-// every build of a list, the host's and a device's, finds the same neighbours whatever the
-// compiler fuses around it.
+// (the cells' candidate ranges in order). Where the processor fuses multiplies and adds, r^2 has
+// them fused by hand, so that every build of a list (the host's, a device's count and its fill)
+// finds the same neighbours whatever the compiler would fuse around it; where it does not (the
+// baseline x86-64-v2 build), nothing can be fused, and a fused multiply-add would be a library
+// call per candidate.
 template <int D, class Fn>
 SLUICE_HOST_DEVICE void for_each_neighbour_within(const CellGridView<D>& cells, const Vec<D>* x,
                                                   std::size_t i, Real radius2, Fn&& fn) {
@@ -42,7 +44,14 @@ SLUICE_HOST_DEVICE void for_each_neighbour_within(const CellGridView<D>& cells, 
       if (j == i) continue;
       const Real* xj = x[j].data();
       Real r2 = 0;
-      for (int a = 0; a < D; ++a) r2 = std::fma(xi[a] - xj[a], xi[a] - xj[a], r2);
+      for (int a = 0; a < D; ++a) {
+        const Real d = xi[a] - xj[a];
+#if defined(__FMA__) || defined(__CUDA_ARCH__)
+        r2 = std::fma(d, d, r2);
+#else
+        r2 += d * d;
+#endif
+      }
       if (r2 < radius2) fn(j);
     }
   });
