@@ -10,6 +10,7 @@
 
 #include "sluice/exec/host_device.hpp"
 #include "sluice/fluid/mps/mps_operators.hpp"
+#include "sluice/neighbor/cell_list.hpp"
 
 namespace sluice {
 
@@ -49,6 +50,27 @@ struct MpsActive {
 };
 struct MpsEveryNeighbour {
   SLUICE_HOST_DEVICE bool operator()(std::size_t) const { return true; }
+};
+
+// Whether particle i has a row in the neighbour list: fluid; boundary particles (dummies too
+// with extrapolated walls) with fluid in the cells around them, which a count of the fluid
+// before each particle of the cell-sorted set answers per cell range (dry walls cost nothing).
+template <int D>
+struct MpsListed {
+  const std::int32_t* role;
+  const Real* position;  // D reals a particle
+  CellGridView<D> cells;
+  const std::uint32_t* fluid_before;
+  bool dummies;
+  SLUICE_HOST_DEVICE bool operator()(std::size_t i) const {
+    if (role[i] == kMpsFluid) return true;
+    if (role[i] == kMpsDummy && !dummies) return false;
+    bool wet = false;
+    cells.for_each_candidate_range(position + D * i, [&](std::uint32_t begin, std::uint32_t end) {
+      wet = wet || fluid_before[end] > fluid_before[begin];
+    });
+    return wet;
+  }
 };
 
 // u* = u + dt (g + nu lap u) into the scratch (the walls' and bodies' own velocities, no-slip,

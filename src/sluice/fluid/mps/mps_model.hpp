@@ -135,7 +135,6 @@ class MpsModel final : public ParticleFluid<D> {
     a(max_speed_, failure_, solves_, iterations_, unknowns_);
   }
 
-
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(
         make_stage<const StepClock>("predict", [this](const StepClock& c) { predict(c.dt); }));
@@ -229,15 +228,9 @@ class MpsModel final : public ParticleFluid<D> {
     fluid_before_[0] = 0;
     for (std::size_t j = 0; j < ps.size(); ++j)
       fluid_before_[j + 1] = fluid_before_[j] + (ps.is_fluid(j) ? 1 : 0);
-    neighbours_.build(ps.position, s.cells, s.cells.radius(), [&](std::size_t i) {
-      if (role[i] == kMpsFluid) return true;
-      if (role[i] == kMpsDummy && !extrapolated_walls()) return false;
-      bool wet = false;
-      s.cells.for_each_candidate_range(ps.position[i], [&](std::uint32_t begin, std::uint32_t end) {
-        wet = wet || fluid_before_[end] > fluid_before_[begin];
-      });
-      return wet;
-    });
+    const MpsListed<D> listed{role.data(), ps.position.front().data(), s.cells.view(),
+                              fluid_before_.data(), extrapolated_walls()};
+    neighbours_.build(ps.position, s.cells, s.cells.radius(), listed);
   }
 
   // The arrays of the host's particle set and the model's own, as the loop bodies see them
