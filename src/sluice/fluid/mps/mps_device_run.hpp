@@ -13,8 +13,7 @@
 #include <vector>
 
 #include "sluice/fluid/mps/mps_operators.hpp"
-#include "sluice/fluid/mps/neighbour_list.hpp"
-#include "sluice/fluid/mps/pressure_equation.hpp"
+#include "sluice/fluid/mps/pressure_rows.hpp"
 #include "sluice/fluid/particle_device.hpp"
 #include "sluice/fluid/particle_device_run.hpp"
 #include "sluice/linear/sparse_solver.hpp"
@@ -61,9 +60,12 @@ class MpsDeviceRun : public ParticleDevice<D> {
   // Which particles the fluid reaches (one per particle, the device's order), for the bodies'
   // loads on the host.
   virtual void download_active(std::vector<std::uint8_t>& active) const = 0;
-  // The neighbour list, for checkpoints: the next step's prediction reads the last one.
-  virtual void download_neighbours(NeighbourList<D>& list) const = 0;
-  virtual void upload_neighbours(const NeighbourList<D>& list) = 0;
+  // The neighbour list (NeighbourList's starts and indices), for checkpoints: the next step's
+  // prediction reads the last one.
+  virtual void download_neighbours(std::vector<std::uint32_t>& start,
+                                   std::vector<std::uint32_t>& index) const = 0;
+  virtual void upload_neighbours(const std::vector<std::uint32_t>& start,
+                                 const std::vector<std::uint32_t>& index) = 0;
 };
 
 // The run on the emulated device (the host's threads).

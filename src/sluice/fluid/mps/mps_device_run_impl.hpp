@@ -11,9 +11,10 @@
 
 #include "sluice/fluid/mps/mps_device_run.hpp"
 #include "sluice/fluid/mps/mps_loop_bodies.hpp"
-#include "sluice/fluid/mps/neighbour_list.hpp"
-#include "sluice/fluid/mps/pressure_equation.hpp"
+#include "sluice/fluid/mps/neighbour_view.hpp"
+#include "sluice/fluid/mps/pressure_rows.hpp"
 #include "sluice/fluid/particle_device_run.hpp"
+#include "sluice/linear/sparse_solver.hpp"
 
 namespace sluice {
 
@@ -277,17 +278,19 @@ class MpsDeviceRunOn final : public MpsDeviceRun<D> {
     active.resize(base_.size());
     active_.to_host(active.data(), active.size());
   }
-  void download_neighbours(NeighbourList<D>& list) const override {
-    std::vector<std::uint32_t> start(start_.size()), index(index_.size());
+  void download_neighbours(std::vector<std::uint32_t>& start,
+                           std::vector<std::uint32_t>& index) const override {
+    start.resize(start_.size());
     start_.to_host(start.data(), start.size());
+    index.resize(index_.size());
     index_.to_host(index.data(), index.size());
-    list.assign(std::move(start), std::move(index));
   }
-  void upload_neighbours(const NeighbourList<D>& list) override {
-    start_.resize(list.starts().size());
-    start_.from_host(list.starts().data(), list.starts().size());
-    index_.resize(list.indices().size());
-    index_.from_host(list.indices().data(), list.indices().size());
+  void upload_neighbours(const std::vector<std::uint32_t>& start,
+                         const std::vector<std::uint32_t>& index) override {
+    start_.resize(start.size());
+    start_.from_host(start.data(), start.size());
+    index_.resize(index.size());
+    index_.from_host(index.data(), index.size());
   }
 
  private:

@@ -21,6 +21,7 @@
 #include "sluice/fluid/mps/mps_loop_bodies.hpp"
 #include "sluice/fluid/mps/mps_operators.hpp"
 #include "sluice/fluid/mps/mps_parameters.hpp"
+#include "sluice/fluid/mps/neighbour_list.hpp"
 #include "sluice/fluid/mps/pressure_equation.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 
@@ -129,9 +130,14 @@ class MpsModel final : public ParticleFluid<D> {
  protected:
   void archive_model(StateArchive& a) override {
     // The next step's prediction uses the last step's list.
-    if (device_ && !a.reading()) device_->download_neighbours(neighbours_);
+    if (device_ && !a.reading()) {
+      std::vector<std::uint32_t> start, index;
+      device_->download_neighbours(start, index);
+      neighbours_.assign(std::move(start), std::move(index));
+    }
     neighbours_.archive_state(a);
-    if (device_ && a.reading()) device_->upload_neighbours(neighbours_);
+    if (device_ && a.reading())
+      device_->upload_neighbours(neighbours_.starts(), neighbours_.indices());
     a(max_speed_, failure_, solves_, iterations_, unknowns_);
   }
 
@@ -421,7 +427,7 @@ class MpsModel final : public ParticleFluid<D> {
     this->run_on_device(std::move(run));
     // The list the host built; the activity from it, on the device, as the host found it.
     this->on_device([&] {
-      device_->upload_neighbours(neighbours_);
+      device_->upload_neighbours(neighbours_.starts(), neighbours_.indices());
       device_->find_surface();
     });
   }

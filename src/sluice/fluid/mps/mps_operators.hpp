@@ -19,10 +19,13 @@
 #include <cmath>
 
 #include "sluice/exec/host_device.hpp"
-#include "sluice/fluid/mps/neighbour_list.hpp"
+#include "sluice/fluid/mps/neighbour_view.hpp"
 #include "sluice/kernels/mps_weight.hpp"
 
 namespace sluice {
+
+template <int D>
+class NeighbourList;  // neighbour_list.hpp, for the host's constructors
 
 // Over plain arrays (positions, the neighbour list's view), so that a loop body on the host or on
 // a device applies them the same way (mps_loop_bodies.hpp).
