@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -28,22 +29,22 @@ struct MullerKernels {
     }
   }
 
-  Real support() const { return h; }
+  SLUICE_HOST_DEVICE Real support() const { return h; }
 
   // W_poly6 = N (h^2 - r^2)^3.
-  Real poly6(Real r) const {
+  SLUICE_HOST_DEVICE Real poly6(Real r) const {
     if (r >= h) return 0;
     const Real t = h2 - r * r;
     return poly6_norm * t * t * t;
   }
   // (1/r) dW_poly6/dr: grad W(r_ij) = r_ij * poly6_gradient_factor(|r_ij|).
-  Real poly6_gradient_factor(Real r) const {
+  SLUICE_HOST_DEVICE Real poly6_gradient_factor(Real r) const {
     if (r >= h) return 0;
     const Real t = h2 - r * r;
     return -6 * poly6_norm * t * t;
   }
   // lap W_poly6 = -6 N (h^2 - r^2) (3 h^2 - 7 r^2) in 3D, -12 N (h^2 - r^2) (h^2 - 3 r^2) in 2D.
-  Real poly6_laplacian(Real r) const {
+  SLUICE_HOST_DEVICE Real poly6_laplacian(Real r) const {
     if (r >= h) return 0;
     const Real r2 = r * r;
     if constexpr (D == 2) return -12 * poly6_norm * (h2 - r2) * (h2 - 3 * r2);
@@ -51,20 +52,22 @@ struct MullerKernels {
   }
 
   // W_spiky = N (h - r)^3.
-  Real spiky(Real r) const {
+  SLUICE_HOST_DEVICE Real spiky(Real r) const {
     if (r >= h) return 0;
     const Real t = h - r;
     return spiky_norm * t * t * t;
   }
   // (1/r) dW_spiky/dr; zero at r = 0, where the direction is undefined.
-  Real spiky_gradient_factor(Real r) const {
+  SLUICE_HOST_DEVICE Real spiky_gradient_factor(Real r) const {
     if (r >= h || r <= 0) return 0;
     const Real t = h - r;
     return -3 * spiky_norm * t * t / r;
   }
 
   // lap W_viscosity = N (h - r).
-  Real viscosity_laplacian(Real r) const { return r >= h ? 0 : viscosity_norm * (h - r); }
+  SLUICE_HOST_DEVICE Real viscosity_laplacian(Real r) const {
+    return r >= h ? 0 : viscosity_norm * (h - r);
+  }
 
   Real h, h2;
   Real poly6_norm = 0, spiky_norm = 0, viscosity_norm = 0;

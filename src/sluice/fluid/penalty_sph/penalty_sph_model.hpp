@@ -22,6 +22,7 @@
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/penalty_sph/lattice_sums.hpp"
 #include "sluice/fluid/penalty_sph/layer_passage.hpp"
+#include "sluice/fluid/penalty_sph/penalty_sph_loop_bodies.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
 #include "sluice/fluid/penalty_sph/solid_layers.hpp"
@@ -183,18 +184,39 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
  private:
-  // The pressure solid particle b holds for fluid particle i, x_i - x_b = rib away: p_i continued
-  // to it along the gradient that holds the water still against b, rho_i (g - a_b) / (w G)
-  // (Adami, Hu & Adams 2012; a_b, a body point's acceleration, is zero for walls and layers). A
-  // zero gradient there (p_b = p_i) would press a face with the pressure half a spacing inside
-  // the water: +12 % on the lift of B5's parked wheels.
-  Real solid_pressure(std::size_t b, Real p_i, Real rho_i, const Vec<D>& rib) const {
-    const ParticleState<D>& s = this->state();
-    Vec<D> felt = s.gravity;
-    const std::int32_t point = s.particles.body_point[b];
-    if (point >= 0) felt -= from_3d<D>(s.body_point_acceleration[std::size_t(point)]);
-    const Real p = p_i - rho_i / (pressure_weight_ * gradient_gain_) * felt.dot(rib);
-    return p_.keep_negative_pressure ? p : std::max<Real>(p, 0);
+  // The host's particle set as the loop bodies see it (penalty_sph_loop_bodies.hpp).
+  PenaltySphArrays<D> arrays() {
+    ParticleState<D>& s = this->state();
+    auto& ps = s.particles;
+    PenaltySphArrays<D> a;
+    a.position = ps.position.data();
+    a.velocity = ps.velocity.data();
+    a.density = ps.density.data();
+    a.pressure = ps.pressure.data();
+    a.mass = ps.mass.data();
+    a.kind = reinterpret_cast<const std::int32_t*>(ps.kind.data());
+    a.body_point = ps.body_point.data();
+    a.solid_spacing = ps[solid_spacing_].data();
+    a.acceleration = ps[acceleration_].data();
+    a.half_velocity = ps[half_velocity_].data();
+    const auto& acceleration = s.body_point_acceleration;
+    a.point_acceleration = acceleration.empty() ? nullptr : acceleration.front().data();
+    return a;
+  }
+  PenaltySphConstants<D> constants() const {
+    return {kernels_,
+            this->state().gravity,
+            rest_density_,
+            p_.gas_stiffness,
+            p_.keep_negative_pressure,
+            lattice_correction_,
+            pressure_weight_,
+            gradient_gain_,
+            damping_,
+            viscosity_,
+            p_.buoyancy,
+            p_.surface_tension,
+            p_.surface_threshold};
   }
 
   // The body of particle i when it is a grain of a free solid layer, else null.
@@ -232,9 +254,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
     step_results_.assign(ps.size(), {});
     step_dt_ = dt;
     drifted_ = 0;
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (ps.is_fluid(i)) half[i] = ps.velocity[i] + 0.5 * dt * a[i];
-    });
+    exec::Default::for_each(ps.size(), PenaltyHalfKick<D>{arrays(), dt});
     if (!has_bodies_) {
       drifting_.clear();
       for (std::size_t i = 0; i < ps.size(); ++i) {
@@ -349,112 +369,33 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
   void kick(Real dt) {
-    auto& ps = this->state().particles;
-    const auto& a = ps[acceleration_];
-    const auto& half = ps[half_velocity_];
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (ps.is_fluid(i)) ps.velocity[i] = half[i] + 0.5 * dt * a[i];
-    });
+    exec::Default::for_each(this->state().particles.size(), PenaltyKick<D>{arrays(), dt});
   }
 
-  // rho_i = sum over the fluid (i included) of m_j W_poly6; p_i = k (rho_i - rho0), by default
-  // not below zero: a particle at the free surface or a wall misses part of its neighbours,
-  // and the tension of its density deficit would clump the surface.
+  // The density by summation and its pressure (PenaltyDensity).
   void compute_density() {
-    ParticleState<D>& s = this->state();
-    auto& ps = s.particles;
-    const auto& spacing = ps[solid_spacing_];
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      Real rho = ps.mass[i] * kernels_.poly6(0);
-      s.cells.for_each_neighbor(
-          ps.position, i, kernels_.h2, [&](std::size_t j, const Vec<D>&, Real r2) {
-            // A solid particle counts as the fluid it displaces, rho0 L_b^D, so that the
-            // density next to a wall is whole and its pressure holds the water above.
-            const Real m = ps.is_fluid(j) ? ps.mass[j] : rest_density_ * std::pow(spacing[j], D);
-            rho += m * kernels_.poly6(std::sqrt(r2));
-          });
-      ps.density[i] = lattice_correction_ * rho;
-      rho = ps.density[i];
-      const Real pressure = p_.gas_stiffness * (rho - rest_density_);
-      ps.pressure[i] = p_.keep_negative_pressure ? pressure : std::max<Real>(pressure, 0);
-    });
+    const ParticleState<D>& s = this->state();
+    exec::Default::for_each_balanced(s.particles.size(),
+                                     PenaltyDensity<D>{arrays(), constants(), s.cells.view()});
   }
 
-  // The fluid's own force per unit mass, gravity and buoyancy included; the solids act in
-  // the drift.
+  // The fluid's own force per unit mass, gravity and buoyancy included (PenaltyForces); the
+  // solids act in the drift.
   void compute_forces() {
-    ParticleState<D>& s = this->state();
-    auto& ps = s.particles;
-    auto& a = ps[acceleration_];
-    const auto& spacing = ps[solid_spacing_];
-    exec::Default::for_each_balanced(ps.size(), [&](std::size_t i) {
-      if (!ps.is_fluid(i)) return;
-      const Real rho_i = ps.density[i];
-      Vec<D> pressure = Vec<D>::Zero(), viscous = Vec<D>::Zero(), normal = Vec<D>::Zero();
-      Real curvature = ps.mass[i] / rho_i * kernels_.poly6_laplacian(0);
-      s.cells.for_each_neighbor(
-          ps.position, i, kernels_.h2, [&](std::size_t j, const Vec<D>& rij, Real r2) {
-            const Real r = std::sqrt(r2);
-            if (!ps.is_fluid(j)) {
-              // A solid particle holds the fluid's pressure continued to it, so that the
-              // water's weight rests on the pressure at a wall as inside, not on the penalty
-              // springs of its first row alone.
-              const Real p_j = solid_pressure(j, ps.pressure[i], rho_i, rij);
-              pressure -= pressure_weight_ * std::pow(spacing[j], D) * (ps.pressure[i] + p_j) *
-                          kernels_.spiky_gradient_factor(r) * rij;
-              return;
-            }
-            const Real volume = ps.mass[j] / ps.density[j];
-            pressure -= volume * pressure_weight_ * (ps.pressure[i] + ps.pressure[j]) *
-                        kernels_.spiky_gradient_factor(r) * rij;
-            viscous += volume * kernels_.viscosity_laplacian(r) * (ps.velocity[j] - ps.velocity[i]);
-            // Monaghan's artificial viscosity on approaching pairs: the damping of the sound
-            // waves that the gas-stiffness pressure carries and Müller et al. leave undamped.
-            // On the pair's mean density, so that i and j feel equal and opposite forces.
-            const Real approach = (ps.velocity[i] - ps.velocity[j]).dot(rij);
-            if (approach < 0 && damping_ > 0) {
-              const Real mu = approach / (r2 + 0.01 * kernels_.h2);
-              const Real mean_density = 0.5 * (rho_i + ps.density[j]);
-              pressure += ps.mass[j] * rho_i / mean_density * damping_ * mu *
-                          kernels_.spiky_gradient_factor(r) * rij;
-            }
-            normal += volume * kernels_.poly6_gradient_factor(r) * rij;
-            curvature += volume * kernels_.poly6_laplacian(r);
-          });
-      Vec<D> f = pressure + viscosity_ * viscous +
-                 (rho_i + p_.buoyancy * (rho_i - rest_density_)) * s.gravity;
-      const Real n = normal.norm();
-      if (p_.surface_tension > 0 && n > p_.surface_threshold) {
-        f -= p_.surface_tension * curvature * normal / n;
-      }
-      a[i] = f / rho_i;
-    });
+    const ParticleState<D>& s = this->state();
+    exec::Default::for_each_balanced(s.particles.size(),
+                                     PenaltyForces<D>{arrays(), constants(), s.cells.view()});
     if (has_bodies_) update_body_pressure_forces();
   }
 
-  // Minus the pressure force each body particle exerts on its fluid neighbours, which hold
-  // their own pressure on it (compute_forces).
+  // Minus the pressure force each body particle exerts on its fluid neighbours
+  // (PenaltyBodyPressureForce).
   void update_body_pressure_forces() {
     const ParticleState<D>& s = this->state();
-    const auto& ps = s.particles;
-    const auto& spacing = ps[solid_spacing_];
     body_pressure_force_.assign(this->body_points().size(), Vec<D>::Zero());
-    for (std::size_t b = 0; b < ps.size(); ++b) {
-      const std::int32_t k = ps.body_point[b];
-      if (k < 0) continue;
-      Vec<D> sum = Vec<D>::Zero();
-      s.cells.for_each_neighbor(
-          ps.position, b, kernels_.h2, [&](std::size_t i, const Vec<D>& rbi, Real r2) {
-            if (!ps.is_fluid(i)) return;
-            // minus the force on i: -(-V_i w V_b (p_i + p_b) grad W(x_i - x_b)), grad W along
-            // -rbi
-            const Real p_b = solid_pressure(b, ps.pressure[i], ps.density[i], -rbi);
-            sum -= ps.mass[i] / ps.density[i] * pressure_weight_ * std::pow(spacing[b], D) *
-                   (ps.pressure[i] + p_b) * kernels_.spiky_gradient_factor(std::sqrt(r2)) * rbi;
-          });
-      body_pressure_force_[static_cast<std::size_t>(k)] = sum;
-    }
+    exec::Default::for_each(s.particles.size(),
+                            PenaltyBodyPressureForce<D>{arrays(), constants(), s.cells.view(),
+                                                        body_pressure_force_.data()});
   }
 
   // 1/2 Ks d^2 over the fluid-solid pairs in contact now.
@@ -474,12 +415,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
   void measure_extremes() {
-    const auto& ps = this->state().particles;
-    const auto& a = ps[acceleration_];
-    max_speed_ = exec::Default::max_of(
-        ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? ps.velocity[i].norm() : 0.0; });
-    max_acceleration_ = exec::Default::max_of(
-        ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? a[i].norm() : 0.0; });
+    const std::size_t n = this->state().particles.size();
+    const PenaltySphArrays<D> a = arrays();
+    max_speed_ = exec::Default::max_of(n, PenaltyFluidMagnitude<D>{a, a.velocity});
+    max_acceleration_ = exec::Default::max_of(n, PenaltyFluidMagnitude<D>{a, a.acceleration});
   }
 
   PenaltySphParameters p_;
