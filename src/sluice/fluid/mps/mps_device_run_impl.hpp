@@ -103,10 +103,16 @@ class MpsDeviceRunOn final : public MpsDeviceRun<D> {
   }
 
   std::string name() const override { return Backend::name(); }
-  // The base's and the fields' bytes, and the run's own arrays per particle: the activity,
-  // the scratch velocity, the extrapolated walls' inputs, the list's counts and starts, the
-  // numbering (the neighbour list and the rows' entries are per neighbour, not counted).
-  double bytes_per_particle() const override { return bytes_per_particle_; }
+  // The base's and the fields' bytes, the run's own arrays per particle (the activity, the
+  // scratch velocity, the extrapolated walls' inputs, the list's counts and starts, the
+  // numbering), and per neighbour in the present list its index and at most one entry of the
+  // pressure's rows (a column and a value): in 3D about as much again as the rest.
+  double bytes_per_particle() const override {
+    const double n = static_cast<double>(base_.size());
+    const double per_neighbour = sizeof(std::uint32_t) + sizeof(int) + sizeof(Real);
+    return bytes_per_particle_ +
+           (n > 0 ? per_neighbour * static_cast<double>(index_.size()) / n : 0);
+  }
 
   void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration,
               const std::vector<std::uint32_t>& cell_start) override {
