@@ -146,9 +146,12 @@ int main(int argc, char** argv) {
       const std::vector<std::string> models =
           sluice::shipped_models(plain.dimension).names_on(device);
       if (std::find(models.begin(), models.end(), plain.model_name) == models.end()) {
+        std::string names;  // "wcsph", "mps and wcsph", "a, b and c"
+        for (std::size_t k = 0; k < models.size(); ++k) {
+          names += (k == 0 ? "" : k + 1 == models.size() ? " and " : ", ") + models[k];
+        }
         fmt::print(stderr, "error: --device: the {} device runs the {} model{} only, not '{}'\n",
-                   device, fmt::join(models, ", "), models.size() == 1 ? "" : "s",
-                   plain.model_name);
+                   device, names, models.size() == 1 ? "" : "s", plain.model_name);
         return sluice::kExitBadInput;
       }
       overrides.push_back("model.device=" + device);
