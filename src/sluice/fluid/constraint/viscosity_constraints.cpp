@@ -47,15 +47,26 @@ void ViscosityConstraints::add_compliance(std::span<const Real> gamma, std::span
 
 void ViscosityConstraints::apply_impulses(const CcpBodies&, std::span<const Real> gamma,
                                           BodyVelocities& u) const {
-  const std::size_t n = axes_.size();
+  if (axes_.size() == 3) return apply_impulses_along<3>(gamma, u);
+  apply_impulses_along<2>(gamma, u);
+}
+
+// With the number of axes known, each axis's sum is a local of its own, not a component of a
+// vector picked at run time: no store to a variable place in every entry's update.
+template <std::size_t N>
+void ViscosityConstraints::apply_impulses_along(std::span<const Real> gamma,
+                                                BodyVelocities& u) const {
   exec::Default::for_each(particles_, [&](std::size_t i) {
-    Vec3 p = Vec3::Zero();
-    for (std::size_t a = 0; a < n; ++a) p[axes_[a]] = gamma[i * n + a];
+    Real p[N];
+    for (std::size_t a = 0; a < N; ++a) p[a] = gamma[i * N + a];
     for (std::size_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
       const Entry& e = entries_[k];
-      for (std::size_t a = 0; a < n; ++a) p[axes_[a]] -= e.backward * gamma[e.particle * n + a];
+      const Real* g = &gamma[e.particle * N];
+      for (std::size_t a = 0; a < N; ++a) p[a] -= e.backward * g[a];
     }
-    u.linear[first_ + i] += inverse_mass_ * p;
+    Vec3 impulse = Vec3::Zero();
+    for (std::size_t a = 0; a < N; ++a) impulse[axes_[a]] = p[a];
+    u.linear[first_ + i] += inverse_mass_ * impulse;
   });
 }
 

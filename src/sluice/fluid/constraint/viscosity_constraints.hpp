@@ -51,6 +51,9 @@ class ViscosityConstraints final : public ConstraintGroup {
   void store(std::span<const Real> gamma) override;
 
  private:
+  template <std::size_t N>
+  void apply_impulses_along(std::span<const Real> gamma, BodyVelocities& u) const;
+
   std::size_t first_ = 0, particles_ = 0;
   Real inverse_mass_ = 0, compliance_ = 0;
   std::vector<int> axes_;
