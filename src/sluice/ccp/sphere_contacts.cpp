@@ -41,6 +41,14 @@ void SphereContacts::remember() {
 
 void SphereContacts::finish() {
   const std::size_t n = contacts_.size(), k = rows_per_contact();
+  // The tangents of every contact with friction, once: each iteration of the solve reads them
+  // three times a contact.
+  tangents_.resize(k >= 3 ? 2 * n : 0);
+  if (k >= 3) {
+    exec::Default::for_each_light(n, [&](std::size_t c) {
+      tangent_basis(contacts_[c].normal, tangents_[2 * c], tangents_[2 * c + 1]);
+    });
+  }
   // Each sphere's contacts, in contact order.
   list_offsets_.assign(count_ + 1, 0);
   for (const Contact& c : contacts_) {
@@ -91,8 +99,8 @@ void SphereContacts::row_velocities(const BodyVelocities& u, std::span<Real> out
     // The contact point's velocity on each side: v + w x (arm), arm_a = r_a n, arm_b = -r_b n.
     const Vec3 slip =
         vb - contact.radius_b * u.angular[contact.b].cross(n) - va - contact.radius_a * wa.cross(n);
-    Vec3 t1, t2;
-    tangent_basis(n, t1, t2);
+    const Vec3& t1 = tangents_[2 * c];
+    const Vec3& t2 = tangents_[2 * c + 1];
     out[c * k + 1] = t1.dot(slip);
     out[c * k + 2] = t2.dot(slip);
     if (k == 3) return;
@@ -131,8 +139,8 @@ void SphereContacts::apply_impulses(const CcpBodies& bodies, std::span<const Rea
       const Vec3& n = contact.normal;
       Vec3 impulse = gamma[c * k] * n;  // on b; minus it on a
       if (k >= 3) {
-        Vec3 t1, t2;
-        tangent_basis(n, t1, t2);
+        const Vec3& t1 = tangents_[2 * c];
+        const Vec3& t2 = tangents_[2 * c + 1];
         const Vec3 tangential = gamma[c * k + 1] * t1 + gamma[c * k + 2] * t2;
         impulse += tangential;
         // arm x impulse: b's arm is -r_b n, a's is r_a n (and a takes minus the impulse).

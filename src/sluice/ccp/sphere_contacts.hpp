@@ -92,6 +92,7 @@ class SphereContacts final : public ConstraintGroup {
   };
   std::vector<std::uint32_t> list_offsets_;
   std::vector<Entry> list_;
+  std::vector<Vec3> tangents_;  // with friction: contact c's two, at 2 c and 2 c + 1
   Memory memory_;
 };
 
