@@ -437,39 +437,55 @@ class ParticleDeviceRun {
   mutable Array<Real> body_centre_, wrench_;
 };
 
-// The base's services as the device ParticleFluid runs on (particle_device.hpp), over a
-// backend; run() gives the model's loops (ParticleFluid::for_each_particle) the particles there.
-template <int D, class Backend>
-class ParticleDeviceOn final : public ParticleDevice<D> {
+// The particle base's services of a device (particle_device.hpp: transfers, the neighbour stage,
+// the body points, the energy, the check, the last good state) over a backend, as a model's
+// device run inherits them: `Interface` is ParticleDevice<D> or a model's extension of it, whose
+// own stages the model's run adds over base_. Uploads and the bytes per particle are each run's.
+template <int D, class Backend, class Interface>
+class ParticleDeviceServices : public Interface {
  public:
-  explicit ParticleDeviceOn(const ParticleDeviceSetup<D>& setup) : run_(setup) {}
-  ParticleDeviceRun<D, Backend>& run() { return run_; }
+  explicit ParticleDeviceServices(const ParticleDeviceSetup<D>& setup) : base_(setup) {}
 
   std::string name() const override { return Backend::name(); }
+  void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
+    base_.download(host, point_acceleration);
+  }
+  void download_cell_starts(std::vector<std::uint32_t>& start) const override {
+    base_.download_cell_starts(start);
+  }
+  void sort_by_cell() override { base_.sort_by_cell(); }
+  void set_body_motion(const std::vector<Real>& body_motion) override {
+    base_.set_body_motion(body_motion);
+  }
+  FluidEnergy energy(const Real* gravity) const override { return base_.energy(gravity); }
+  bool any_problem() const override { return base_.any_problem(); }
+  void remember() override { base_.remember(); }
+  void download_remembered(ParticleSet<D>& host) const override { base_.download_remembered(host); }
+  void finish() const override { base_.finish(); }
+
+ protected:
+  ParticleDeviceRun<D, Backend> base_;
+};
+
+// The base's services alone, as the device ParticleFluid runs on for a model without a device
+// run of its own; run() gives the model's loops (ParticleFluid::for_each_particle) the
+// particles there.
+template <int D, class Backend>
+class ParticleDeviceOn final : public ParticleDeviceServices<D, Backend, ParticleDevice<D>> {
+  using Services = ParticleDeviceServices<D, Backend, ParticleDevice<D>>;
+
+ public:
+  using Services::Services;
+  ParticleDeviceRun<D, Backend>& run() { return this->base_; }
+
   double bytes_per_particle() const override { return bytes_per_particle_; }
   void upload(const ParticleSet<D>& host, const std::vector<Vec3>& point_acceleration,
               const std::vector<std::uint32_t>& cell_start) override {
-    run_.upload(host, point_acceleration, cell_start);
+    this->base_.upload(host, point_acceleration, cell_start);
     bytes_per_particle_ = ParticleDeviceRun<D, Backend>::bytes_per_particle(host);
   }
-  void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
-    run_.download(host, point_acceleration);
-  }
-  void download_cell_starts(std::vector<std::uint32_t>& start) const override {
-    run_.download_cell_starts(start);
-  }
-  void sort_by_cell() override { run_.sort_by_cell(); }
-  void set_body_motion(const std::vector<Real>& body_motion) override {
-    run_.set_body_motion(body_motion);
-  }
-  FluidEnergy energy(const Real* gravity) const override { return run_.energy(gravity); }
-  bool any_problem() const override { return run_.any_problem(); }
-  void remember() override { run_.remember(); }
-  void download_remembered(ParticleSet<D>& host) const override { run_.download_remembered(host); }
-  void finish() const override { run_.finish(); }
 
  private:
-  ParticleDeviceRun<D, Backend> run_;
   double bytes_per_particle_ = 0;
 };
 

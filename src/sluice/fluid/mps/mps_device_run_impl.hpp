@@ -90,19 +90,19 @@ struct PressureAnswer {
 };
 
 template <int D, class Backend>
-class MpsDeviceRunOn final : public MpsDeviceRun<D> {
+class MpsDeviceRunOn final : public ParticleDeviceServices<D, Backend, MpsDeviceRun<D>> {
   template <class T>
   using Array = typename Backend::template Array<T>;
+  using ParticleDeviceServices<D, Backend, MpsDeviceRun<D>>::base_;
 
  public:
   explicit MpsDeviceRunOn(const MpsDeviceSetup<D>& setup)
-      : setup_(setup),
-        base_(setup.base),
+      : ParticleDeviceServices<D, Backend, MpsDeviceRun<D>>(setup.base),
+        setup_(setup),
         solver_(make_sparse_solver(setup.solver, setup.solver_settings)) {
     if (!solver_) throw std::invalid_argument("unknown sparse solver " + setup.solver);
   }
 
-  std::string name() const override { return Backend::name(); }
   // The base's and the fields' bytes, the run's own arrays per particle (the activity, the
   // scratch velocity, the extrapolated walls' inputs, the list's counts and starts, the
   // numbering), and per neighbour in the present list its index and at most one entry of the
@@ -135,21 +135,6 @@ class MpsDeviceRunOn final : public MpsDeviceRun<D> {
                           3 * D * sizeof(Real) + 1 + 4 * sizeof(std::uint32_t) + sizeof(int) +
                           sizeof(std::size_t);
   }
-  void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
-    base_.download(host, point_acceleration);
-  }
-  void download_cell_starts(std::vector<std::uint32_t>& start) const override {
-    base_.download_cell_starts(start);
-  }
-  void sort_by_cell() override { base_.sort_by_cell(); }
-  void set_body_motion(const std::vector<Real>& body_motion) override {
-    base_.set_body_motion(body_motion);
-  }
-  FluidEnergy energy(const Real* gravity) const override { return base_.energy(gravity); }
-  bool any_problem() const override { return base_.any_problem(); }
-  void remember() override { base_.remember(); }
-  void download_remembered(ParticleSet<D>& host) const override { base_.download_remembered(host); }
-  void finish() const override { base_.finish(); }
 
   void predict(Real dt, Real nu) override {
     const MpsArrays<D> a = arrays();
@@ -337,7 +322,6 @@ class MpsDeviceRunOn final : public MpsDeviceRun<D> {
   }
 
   MpsDeviceSetup<D> setup_;
-  ParticleDeviceRun<D, Backend> base_;
   std::unique_ptr<SparseSolver> solver_;
   double bytes_per_particle_ = 0;
   Array<std::uint8_t> active_, extrapolated_;

@@ -25,16 +25,16 @@ double wcsph_device_run_bytes_per_particle(const ParticleSet<D>& layout) {
 }
 
 template <int D, class Kernel, class Backend>
-class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
+class WcsphDeviceRunOn final : public ParticleDeviceServices<D, Backend, WcsphDeviceRun<D>> {
   template <class T>
   using Array = typename Backend::template Array<T>;
   using typename WcsphDeviceRun<D>::Extremes;
+  using ParticleDeviceServices<D, Backend, WcsphDeviceRun<D>>::base_;
 
  public:
   explicit WcsphDeviceRunOn(const WcsphDeviceSetup<D, Kernel>& setup)
-      : constants_(setup.constants), base_(setup.base) {}
-
-  std::string name() const override { return Backend::name(); }
+      : ParticleDeviceServices<D, Backend, WcsphDeviceRun<D>>(setup.base),
+        constants_(setup.constants) {}
 
   double bytes_per_particle() const override { return bytes_per_particle_; }
 
@@ -54,14 +54,6 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     pack(true);
   }
 
-  void download(ParticleSet<D>& host, std::vector<Vec3>& point_acceleration) const override {
-    base_.download(host, point_acceleration);
-  }
-
-  void download_cell_starts(std::vector<std::uint32_t>& start) const override {
-    base_.download_cell_starts(start);
-  }
-
   void kick_drift(Real dt) override {
     base_.for_each(WcsphKickDrift<D>{fields(), dt, constants_.eos});
   }
@@ -69,10 +61,6 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   void sort_by_cell() override {
     base_.sort_by_cell();
     find_fields();  // the sort's gather swapped every field's array
-  }
-
-  void set_body_motion(const std::vector<Real>& body_motion) override {
-    base_.set_body_motion(body_motion);
   }
 
   void update_walls() override {
@@ -95,18 +83,11 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
     return e;
   }
 
-  FluidEnergy energy(const Real* gravity) const override { return base_.energy(gravity); }
-
   void body_loads(const std::vector<Vec3>& centre, std::vector<Wrench>& out) const override {
     base_.body_loads(centre, out, [&](Real* point_force) {
       return WcsphBodyPointForce<D, Kernel>{neighbourhood(), point_force};
     });
   }
-
-  void finish() const override { base_.finish(); }
-  bool any_problem() const override { return base_.any_problem(); }
-  void remember() override { base_.remember(); }
-  void download_remembered(ParticleSet<D>& host) const override { base_.download_remembered(host); }
 
  private:
   // The fields' arrays, found by name once after each upload and sort (the only times they
@@ -145,7 +126,6 @@ class WcsphDeviceRunOn final : public WcsphDeviceRun<D> {
   }
 
   WcsphConstants<D, Kernel> constants_;
-  ParticleDeviceRun<D, Backend> base_;
   WcsphFields<D> fields_;
   double bytes_per_particle_ = 0;
   Array<float> packed_position_[3], packed_velocity_[3], packed_viscous_velocity_[3];
