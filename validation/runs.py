@@ -97,7 +97,9 @@ def run_statistics(out):
             legs.append(json.load(f))
     if not legs:
         return None
-    steps = sum(leg["steps"] for leg in legs)
+    # The step count from the start where the last leg gives it: a leg stopped before it wrote
+    # its statistics would be missing from a sum (its wall seconds are, from the wall column).
+    steps = legs[-1].get("last_step") or sum(leg["steps"] for leg in legs)
     wall = sum(leg["wall_seconds"] for leg in legs)
     simulated = sum(leg["simulated_seconds"] - leg.get("start_seconds", 0) for leg in legs)
     return {"steps": steps, "wall": wall, "threads": max(leg["threads"] for leg in legs),

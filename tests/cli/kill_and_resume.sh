@@ -27,7 +27,8 @@ fail() {
 
 rm -rf "$work"
 mkdir -p "$work"
-"$sluice" run "$case_file" --out "$work/whole" "${options[@]}" >"$work/whole.log" 2>&1 ||
+"$sluice" run "$case_file" --out "$work/whole" "${options[@]}" --stats "$work/whole_stats.json" \
+  >"$work/whole.log" 2>&1 ||
   fail "the run without kills failed: $(tail -n 3 "$work/whole.log")"
 
 # The step of a folder's newest checkpoint (0 if none).
@@ -80,9 +81,14 @@ for target in "${targets[@]}"; do
 done
 [ "$landed" -eq "$kills" ] || fail "$landed kills landed of $kills"
 
-# The last resume runs to the end.
+# The last resume runs to the end, and counts the steps from the case's start as the whole run
+# does (its own "steps" are since its checkpoint).
+options+=(--stats "$work/last_stats.json")
 start_run
 wait "$pid" || fail "the last resume failed: $(tail -n 3 "$work/run_$segment.log")"
+last_step() { grep -o '"last_step": [0-9]*' "$1" | grep -o '[0-9]*$'; }
+[ "$(last_step "$work/whole_stats.json")" = "$(last_step "$work/last_stats.json")" ] ||
+  fail "last_step $(last_step "$work/last_stats.json") after the resumes, $(last_step "$work/whole_stats.json") in the whole run"
 
 if ! diff -r --exclude=checkpoints "$work/whole" "$work/killed" >"$work/diff.txt"; then
   fail "the killed run's output differs from the whole run's:

@@ -232,6 +232,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   if (!options.quiet) progress.finish();
 
   summary.steps = sim.clock().step - first_step;
+  summary.last_step = sim.clock().step;
   summary.simulated_time = sim.time();
   summary.wall_seconds = elapsed();
   summary.frames = frames.frames_written();
@@ -308,7 +309,7 @@ std::string stats_json(const RunSummary& r) {
       r.wall_seconds > 0 ? static_cast<double>(r.fluid_particles) * r.steps / r.wall_seconds : 0;
   return fmt::format(
       "{{\n  \"element_name\": \"{}\",\n  \"particles\": {},\n  \"fluid_particles\": {},\n"
-      "  \"steps\": {},\n"
+      "  \"steps\": {},\n  \"last_step\": {},\n"
       "  \"simulated_seconds\": {:.9g},\n  \"start_seconds\": {:.9g},\n"
       "  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n"
       "  \"particle_steps_per_second\": {:.6g},\n  \"fluid_particle_steps_per_second\": {:.6g},\n"
@@ -319,8 +320,8 @@ std::string stats_json(const RunSummary& r) {
       "  \"velocity_solves\": {{{}}},\n"
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
-      r.element_name, r.particles, r.fluid_particles, r.steps, r.simulated_time, r.start_time,
-      r.wall_seconds, r.threads, r.particle_steps_per_second(), fluid_rate,
+      r.element_name, r.particles, r.fluid_particles, r.steps, r.last_step, r.simulated_time,
+      r.start_time, r.wall_seconds, r.threads, r.particle_steps_per_second(), fluid_rate,
       r.simulated_time > r.start_time ? r.wall_seconds / (r.simulated_time - r.start_time) : 0,
       r.frames, r.checkpoints, r.bodies, r.solid_substeps,
       r.steps > 0 ? double(r.solid_substeps) / r.steps : 0, r.most_substeps_per_step,

@@ -29,7 +29,8 @@ struct RunSummary {
   std::string element_name = "particles";  // what `particles` counts: particles or cells
   std::size_t particles = 0;
   std::size_t fluid_particles = 0;
-  long steps = 0;  // taken by this run (a resumed run: since its checkpoint)
+  long steps = 0;      // taken by this run (a resumed run: since its checkpoint)
+  long last_step = 0;  // the step count at the end, from the case's start (a resumed run too)
   double simulated_time = 0;
   double start_time = 0;  // a resumed run: its checkpoint's time
   int checkpoints = 0;    // written by this run
