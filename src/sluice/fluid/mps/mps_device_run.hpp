@@ -1,7 +1,7 @@
 // An MPS run whose particles live in a device's memory for the whole run (issue 41): the
 // particle base's device (particle_device.hpp, which the base owns and runs its own services
 // on) with mps's stages, which the model calls each step. The stages run the loop bodies the
-// host runs (mps_loop_bodies.hpp, pressure_equation.hpp's rows) through a backend: the host's
+// host runs (mps_loop_bodies.hpp, pressure_rows.hpp) through a backend: the host's
 // own threads over the device's arrays ("emulated"), which tests the device run's bookkeeping
 // (sort, scans, neighbour list, numbering of the unknowns, transfers) on machines without a GPU.
 // The pressure solve is the host's sparse solver on the assembled rows.

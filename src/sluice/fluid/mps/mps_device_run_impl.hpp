@@ -1,6 +1,6 @@
 // The device run of mps_device_run.hpp: the particle base's services on the device
 // (particle_device_run.hpp, which describes what a backend offers) and mps's own stages, the
-// loop bodies the host runs (mps_loop_bodies.hpp, pressure_equation.hpp's rows) over the
+// loop bodies the host runs (mps_loop_bodies.hpp, pressure_rows.hpp) over the
 // device's arrays. Included by mps_device_run.cpp (the host's threads, the emulated device).
 #pragma once
 
@@ -53,9 +53,7 @@ template <int D>
 struct PressureUnknownFlag {
   PressureEquationInputs<D> in;
   std::uint32_t* flag;
-  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
-    flag[i] = in.active[i] && (in.wall(i) || !in.surface[i]) ? 1u : 0u;
-  }
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const { flag[i] = in.unknown(i) ? 1u : 0u; }
 };
 struct PressureNumbering {
   const std::uint32_t* flag;

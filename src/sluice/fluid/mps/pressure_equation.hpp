@@ -53,7 +53,7 @@ class PressureEquation {
     row_of_.assign(n, -1);
     int unknowns = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (in.active[i] && (in.wall(i) || !in.surface[i])) row_of_[i] = unknowns++;
+      if (in.unknown(i)) row_of_[i] = unknowns++;
     }
     particle_of_.resize(static_cast<std::size_t>(unknowns));
     for (std::size_t i = 0; i < n; ++i) {

@@ -39,6 +39,11 @@ struct PressureEquationInputs {
   SLUICE_HOST_DEVICE bool wall(std::size_t j) const {
     return extrapolated != nullptr && extrapolated[j] != 0;
   }
+  // Whether particle i's pressure is an unknown of the equation: active, and not on the free
+  // surface (p = 0 there) unless it is a wall extrapolated from the fluid.
+  SLUICE_HOST_DEVICE bool unknown(std::size_t i) const {
+    return active[i] && (wall(i) || !surface[i]);
+  }
   // The coefficient of p_j in particle i's row, zero for a particle outside the row: a wall
   // row, sum_f w_wf (p_w - p_f) = sum_f w_wf rho (g - a_w) . (x_w - x_f) over its fluid
   // neighbours f; a fluid row, the Laplacian over every active neighbour.
