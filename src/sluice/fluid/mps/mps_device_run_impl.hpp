@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sluice/fluid/fluid_vector_norm.hpp"
 #include "sluice/fluid/mps/mps_device_run.hpp"
 #include "sluice/fluid/mps/mps_loop_bodies.hpp"
 #include "sluice/fluid/mps/neighbour_view.hpp"
@@ -261,7 +262,10 @@ class MpsDeviceRunOn final : public ParticleDeviceServices<D, Backend, MpsDevice
     base_.for_each(MpsAddVelocity<D>{a, dt});
   }
 
-  Real max_speed() const override { return base_.max_of(MpsFluidSpeed<D>{arrays()}); }
+  Real max_speed() const override {
+    const MpsArrays<D> a = arrays();
+    return base_.max_of(FluidVectorNorm<D>{a.kind, a.velocity});
+  }
 
   void download_active(std::vector<std::uint8_t>& active) const override {
     active.resize(base_.size());

@@ -234,13 +234,4 @@ struct MpsPressureCorrection {
   }
 };
 
-// The speed of a fluid particle, zero for the rest: the largest sets the time step.
-template <int D>
-struct MpsFluidSpeed {
-  MpsArrays<D> a;
-  SLUICE_HOST_DEVICE SLUICE_ONE_HOST_COPY double operator()(std::size_t i) const {
-    return a.fluid(i) ? a.velocity[i].norm() : 0.0;
-  }
-};
-
 }  // namespace sluice

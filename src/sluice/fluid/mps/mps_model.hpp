@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "sluice/exec/policy.hpp"
+#include "sluice/fluid/fluid_vector_norm.hpp"
 #include "sluice/fluid/mps/body_surface_pressure.hpp"
 #include "sluice/fluid/mps/mps_device_run.hpp"
 #include "sluice/fluid/mps/mps_loop_bodies.hpp"
@@ -397,7 +398,9 @@ class MpsModel final : public ParticleFluid<D> {
       max_speed_ = device_->max_speed();
       return;
     }
-    max_speed_ = exec::Default::max_of(this->state().particles.size(), MpsFluidSpeed<D>{arrays()});
+    const MpsArrays<D> a = arrays();
+    max_speed_ = exec::Default::max_of(this->state().particles.size(),
+                                       FluidVectorNorm<D>{a.kind, a.velocity});
   }
 
   // The device run (model.device: emulated), from the host's particles as initialize() left

@@ -201,14 +201,4 @@ struct PenaltyBodyPressureForce {
   }
 };
 
-// The speed or acceleration of a fluid particle, zero for the rest: the largest set the step.
-template <int D>
-struct PenaltyFluidMagnitude {
-  PenaltySphArrays<D> a;
-  const Vec<D>* vector;
-  SLUICE_HOST_DEVICE SLUICE_ONE_HOST_COPY double operator()(std::size_t i) const {
-    return a.fluid(i) ? vector[i].norm() : 0.0;
-  }
-};
-
 }  // namespace sluice

@@ -19,6 +19,7 @@
 
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
+#include "sluice/fluid/fluid_vector_norm.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/penalty_sph/lattice_sums.hpp"
 #include "sluice/fluid/penalty_sph/layer_passage.hpp"
@@ -417,8 +418,8 @@ class PenaltySphModel final : public ParticleFluid<D> {
   void measure_extremes() {
     const std::size_t n = this->state().particles.size();
     const PenaltySphArrays<D> a = arrays();
-    max_speed_ = exec::Default::max_of(n, PenaltyFluidMagnitude<D>{a, a.velocity});
-    max_acceleration_ = exec::Default::max_of(n, PenaltyFluidMagnitude<D>{a, a.acceleration});
+    max_speed_ = exec::Default::max_of(n, FluidVectorNorm<D>{a.kind, a.velocity});
+    max_acceleration_ = exec::Default::max_of(n, FluidVectorNorm<D>{a.kind, a.acceleration});
   }
 
   PenaltySphParameters p_;
