@@ -41,10 +41,10 @@ const Vec3 kGravity(0, 0, -9.81);
 
 TEST(SolidContactStepper, FreeFlightIsExact) {
   const SolidParticles<3> solids = layer(0.002);
-  std::vector<std::uint32_t> scratch;
+  std::vector<SolidCandidate> scratch;
   Vec3 x(0.05, 0.05, 0.3), v(0.1, 0, -1);
-  const auto r = advance_against_solids<3>(settings(5e4), solids, x, v, kMass, kDensity, kGravity,
-                                           0.01, scratch);
+  const auto r = advance_against_solids<3>(settings(5e4), solids.view(), x, v, kMass, kDensity,
+                                           kGravity, 0.01, scratch);
   EXPECT_FALSE(r.touched);
   EXPECT_EQ(r.impulse.norm(), 0);
   EXPECT_NEAR((x - Vec3(0.051, 0.05, 0.3 - 0.01 - 0.5 * 9.81e-4)).norm(), 0, 1e-14);
@@ -60,11 +60,11 @@ struct Drop {
 Drop drop(Real stiffness, Real solid_spacing, Real x0, Real y0, int steps) {
   const SolidParticles<3> solids = layer(solid_spacing);
   const SolidContactSettings<3> s = settings(stiffness);
-  std::vector<std::uint32_t> scratch;
+  std::vector<SolidCandidate> scratch;
   Drop d{Vec3(x0, y0, 0.01), Vec3(0, 0, -std::sqrt(2 * 9.81 * 0.3))};
   for (int k = 0; k < steps; ++k) {
-    const auto r =
-        advance_against_solids<3>(s, solids, d.x, d.v, kMass, kDensity, kGravity, 0.01, scratch);
+    const auto r = advance_against_solids<3>(s, solids.view(), d.x, d.v, kMass, kDensity, kGravity,
+                                             0.01, scratch);
     d.crossed_plane = d.crossed_plane || d.x.z() < 0;
     d.last_force = r.impulse / 0.01;
   }
@@ -115,10 +115,10 @@ Vec3 rest_on_layer_moving_at(const Vec3& drift, Vec3& x) {
   EXPECT_EQ(solids.fixed_count, 0u);
   EXPECT_NEAR((solids.velocity[7] - drift).norm(), 0, 1e-12);
   EXPECT_EQ(start[7], particles.position[7]);  // the next drift starts from here
-  std::vector<std::uint32_t> scratch;
+  std::vector<SolidCandidate> scratch;
   Vec3 v = Vec3(0, 0, -0.3) + drift;
   const SolidContactSettings<3> s = settings(5e4);
-  advance_against_solids<3>(s, solids, x, v, kMass, kDensity, kGravity, 0.01, scratch);
+  advance_against_solids<3>(s, solids.view(), x, v, kMass, kDensity, kGravity, 0.01, scratch);
   return v;
 }
 

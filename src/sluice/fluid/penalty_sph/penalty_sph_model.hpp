@@ -23,6 +23,7 @@
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/penalty_sph/lattice_sums.hpp"
 #include "sluice/fluid/penalty_sph/layer_passage.hpp"
+#include "sluice/fluid/penalty_sph/penalty_drift.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_loop_bodies.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
@@ -204,6 +205,12 @@ class PenaltySphModel final : public ParticleFluid<D> {
     a.point_acceleration = acceleration.empty() ? nullptr : acceleration.front().data();
     return a;
   }
+  PenaltyDriftArrays<D> drift_arrays() {
+    auto& ps = this->state().particles;
+    return {ps.position.data(), ps[half_velocity_].data(), ps.mass.data(), ps.density.data(),
+            step_results_.data()};
+  }
+  Vec<D>* boundary() { return this->state().particles[boundary_force_].data(); }
   PenaltySphConstants<D> constants() const {
     return {kernels_,
             this->state().gravity,
@@ -308,29 +315,18 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // for the lightest of them.
   double boundary_stiffness() const override { return settings_.law.stiffness; }
 
-  // Drifts the fluid particles `which` by dt through the solids, adding to their step's
-  // results; with `on_bodies`, the bodies' share of it becomes their load for the next
-  // exchange.
+  // Drifts the fluid particles `which` by dt through the solids (PenaltyDrift), adding to
+  // their step's results; with `on_bodies`, the bodies' share of it becomes their load for the
+  // next exchange.
   void drift(const std::vector<std::uint32_t>& which, Real dt, bool on_bodies) {
-    auto& ps = this->state().particles;
-    auto& half = ps[half_velocity_];
     if (on_bodies) body_impulses_.resize(which.size());
-    exec::Default::for_each_balanced(which.size(), [&](std::size_t n) {
-      const std::size_t i = which[n];
-      thread_local std::vector<std::uint32_t> candidates;
-      // The fluid force's half kick is in v already, so the stepper holds none: the drift
-      // is x += dt v_half unless a solid acts.
-      if (on_bodies) body_impulses_[n].clear();
-      const SolidStepResult<D> r = advance_against_solids<D>(
-          settings_, solids_, ps.position[i], half[i], ps.mass[i], ps.density[i], Vec<D>::Zero(),
-          dt, candidates, on_bodies ? &body_impulses_[n] : nullptr);
-      SolidStepResult<D>& total = step_results_[i];
-      total.impulse += r.impulse;
-      total.peak_force = std::max(total.peak_force, r.peak_force);
-      total.substeps += r.substeps;
-      total.touched = total.touched || r.touched;
-      total.crossed = total.crossed || r.crossed;
-    });
+    exec::Default::for_each_balanced(which.size(), PenaltyDrift<D, HostDriftScratch<D>>{
+                                                       drift_arrays(),
+                                                       settings_,
+                                                       solids_.view(),
+                                                       which.data(),
+                                                       dt,
+                                                       {on_bodies ? &body_impulses_ : nullptr}});
     if (!on_bodies) return;
     // Summed in particle order, so that the loads do not depend on the thread count.
     body_impulse_.assign(this->body_points().size(), Vec<D>::Zero());
@@ -346,26 +342,32 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // boundary force, the counters and which particles passed a layer.
   void finish_drift() {
     auto& ps = this->state().particles;
-    const auto& a = ps[acceleration_];
-    const auto& half = ps[half_velocity_];
-    auto& boundary = ps[boundary_force_];
-    const Real dt = step_dt_;
-    if (!p_.solids.empty()) passage_.update_levels(ps, this->body_points());
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (!ps.is_fluid(i)) continue;
-      const SolidStepResult<D>& r = step_results_[i];
-      ps.velocity[i] = half[i] + 0.5 * dt * a[i];
-      boundary[i] = r.impulse / dt;
-      ++fluid_steps_;
-      substeps_ += r.substeps;
-      if (r.touched) {
-        ++contacts_;
-        force_sum_ += boundary[i].norm();
-        peak_force_ = std::max<double>(peak_force_, r.peak_force);
+    const PenaltySphArrays<D> a = arrays();
+    exec::Default::for_each(
+        ps.size(), PenaltyEndOfDrift<D>{a.kind, a.half_velocity, a.acceleration,
+                                        step_results_.data(), a.velocity, boundary(), step_dt_});
+    // In index order, as a device's sums take them.
+    const auto sum = [&](const auto& value) {
+      double total = 0;
+      for (std::size_t i = 0; i < ps.size(); ++i) total += value(i);
+      return total;
+    };
+    const auto max = [&](const auto& value) { return exec::Default::max_of(ps.size(), value); };
+    add_counters(PenaltyStepCounters<D>{step_results_.data(), boundary()}.totals(sum, max));
+    if (!p_.solids.empty()) {
+      passage_.update_levels(ps, this->body_points());
+      for (std::size_t i = 0; i < ps.size(); ++i) {
+        if (ps.is_fluid(i)) passage_.record(ps, i);
       }
-      crossings_ += r.crossed;
-      passage_.record(ps, i);
     }
+  }
+  void add_counters(const typename PenaltyStepCounters<D>::Totals& t) {
+    fluid_steps_ += static_cast<long>(this->state().fluid_count);
+    substeps_ += static_cast<long>(t.substeps);
+    contacts_ += static_cast<long>(t.touched);
+    force_sum_ += t.contact_force;
+    peak_force_ = std::max(peak_force_, t.peak_force);
+    crossings_ += static_cast<long>(t.crossed);
     ++steps_;
   }
 
@@ -399,19 +401,14 @@ class PenaltySphModel final : public ParticleFluid<D> {
                                                         body_pressure_force_.data()});
   }
 
-  // 1/2 Ks d^2 over the fluid-solid pairs in contact now.
+  // 1/2 Ks d^2 over the fluid-solid pairs in contact now, summed in index order.
   double elastic_energy() const {
     const auto& ps = this->state().particles;
+    const PenaltyElasticEnergy<D> energy{reinterpret_cast<const std::int32_t*>(ps.kind.data()),
+                                         ps.position.data(), solids_.view(),
+                                         settings_.law.stiffness};
     double sum = 0;
-    std::vector<std::uint32_t> near;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (!ps.is_fluid(i)) continue;
-      solids_.near(ps.position[i], near);
-      for (const std::uint32_t k : near) {
-        const Real d = solids_.reach[k] - (ps.position[i] - solids_.position[k]).norm();
-        if (d > 0) sum += 0.5 * settings_.law.stiffness * d * d;
-      }
-    }
+    for (std::size_t i = 0; i < ps.size(); ++i) sum += energy(i);
     return sum;
   }
 

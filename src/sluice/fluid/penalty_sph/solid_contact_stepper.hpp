@@ -24,6 +24,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "sluice/exec/bounded_list.hpp"
+#include "sluice/exec/host_device.hpp"
 #include "sluice/fluid/penalty_sph/penalty_boundary.hpp"
 #include "sluice/fluid/penalty_sph/solid_particles.hpp"
 #include "sluice/kernels/muller_kernels.hpp"
@@ -32,7 +34,7 @@ namespace sluice {
 
 // The time after which a particle at `speed` under `acceleration` may have moved `distance`:
 // the root of speed t + acceleration t^2 / 2 = distance.
-inline Real time_to_move(Real distance, Real speed, Real acceleration) {
+SLUICE_HOST_DEVICE inline Real time_to_move(Real distance, Real speed, Real acceleration) {
   return 2 * distance / (speed + std::sqrt(speed * speed + 2 * acceleration * distance));
 }
 
@@ -50,27 +52,54 @@ struct SolidStepResult {
   Vec<D> impulse = Vec<D>::Zero();  // of the boundary force f_np + f_ns over the step [N s]
   Real peak_force = 0;              // the largest boundary force of a sub-step [N]
   int substeps = 0;
-  bool touched = false;  // in penalty contact at some sub-step
-  bool crossed = false;  // went past a solid particle's centre within a sub-step
+  bool touched = false;     // in penalty contact at some sub-step
+  bool crossed = false;     // went past a solid particle's centre within a sub-step
+  bool overflowed = false;  // a bounded list (a device's) was too short: the step is void
 };
 
-// The impulse a fluid particle gave a body's solid particle (its body point) in a step.
+// The impulse a fluid particle gave a body's solid particle (its body point) in a drift.
 template <int D>
 struct BodyImpulse {
   std::int32_t body_point = -1;
   Vec<D> impulse = Vec<D>::Zero();
 };
 
+// A solid particle within two supports of where the fluid particle's list was made, and
+// whether it presses on it at the present sub-step.
+struct SolidCandidate {
+  std::uint32_t index = 0;
+  bool active = false;
+};
+
+// The impulses one fluid particle gives the bodies' particles over a drift, an entry per body
+// point in the order it first touched them, into `entries` (a std::vector on the host, a
+// BoundedList on a device). Summed per particle first, so that a device can add the particles'
+// entries up per body point in particle order, as the host does (penalty_sph_model.hpp).
+template <int D, class List>
+struct BodyImpulseTally {
+  List& entries;
+  // False where the list is full.
+  SLUICE_HOST_DEVICE bool add(std::int32_t body_point, const Vec<D>& impulse) {
+    for (std::size_t e = 0; e < entries.size(); ++e) {
+      if (entries[e].body_point == body_point) {
+        entries[e].impulse += impulse;
+        return true;
+      }
+    }
+    return append(entries, BodyImpulse<D>{body_point, impulse});
+  }
+};
+
 // Advances x, v by dt for a fluid particle of mass m and density rho, whose fluid force per
-// unit mass, gravity included, is `acceleration`. `candidates` is scratch. With `on_bodies`,
-// the impulses on bodies' particles are appended to it: minus each one's share of every
-// sub-step's implicit force times its length, the reaction of what the fluid particle felt.
-template <int D>
-SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& settings,
-                                          const SolidParticles<D>& solids, Vec<D>& x, Vec<D>& v,
-                                          Real m, Real rho, const Vec<D>& acceleration, Real dt,
-                                          std::vector<std::uint32_t>& candidates,
-                                          std::vector<BodyImpulse<D>>* on_bodies = nullptr) {
+// unit mass, gravity included, is `acceleration`. `candidates` is scratch (a std::vector of
+// SolidCandidate, or a BoundedList of them). With `on_bodies` (a BodyImpulseTally), the
+// impulses on bodies' particles go to it: minus each one's share of every sub-step's implicit
+// force times its length, the reaction of what the fluid particle felt.
+template <int D, class Candidates, class Tally = BodyImpulseTally<D, std::vector<BodyImpulse<D>>>>
+SLUICE_HOST_DEVICE SLUICE_ONE_HOST_COPY SolidStepResult<D> advance_against_solids(
+    const SolidContactSettings<D>& settings, const SolidParticlesView<D>& solids, Vec<D>& x,
+    Vec<D>& v, Real m, Real rho, const Vec<D>& acceleration, Real dt, Candidates& candidates,
+    Tally* on_bodies = nullptr) {
   using Mat = Eigen::Matrix<Real, D, D>;
   SolidStepResult<D> out;
   const Real support = solids.support;
@@ -79,28 +108,32 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
   // One contact's frequency, and the sub-step that resolves its impact.
   const Real omega = std::sqrt(settings.law.stiffness / m);
   const Real shortest = 0.2 / omega;
-  thread_local std::vector<std::uint8_t> active;
-  // The forces of the bodies' particles on this fluid particle at a sub-step's start, with
-  // their share of the implicit step's stiffness and damping, and their velocity.
-  struct BodyForce {
-    std::int32_t body_point;
-    Vec<D> force, normal;  // normal zero for the no-slip drag
-    Real stiffness, damping;
-    Vec<D> solid_velocity;
+  // The no-slip drag of solid k on the particle at x moving at v, at time t (0 beyond h).
+  auto drag_of = [&](std::uint32_t k, const Vec<D>& x_now, Real t) {
+    const Real r2 = (x_now - solids.at(k, t)).squaredNorm();
+    if (r2 >= h2 || settings.wall_friction <= 0) return Real(0);
+    // f_ns = -mu_w V_b lap W_visc (v - v_b), a force density, times the particle's volume.
+    return settings.wall_friction * solids.volume[k] *
+           settings.kernels.viscosity_laplacian(std::sqrt(r2)) * fluid_volume;
   };
-  thread_local std::vector<BodyForce> reactions;
   Vec<D> anchor = x, previous = x;
   bool listed = false;
   Real t = 0, t_previous = 0;
   while (t < dt * (1 - 1e-12)) {
     ++out.substeps;
     if (!listed || (x - anchor).squaredNorm() > support * support) {
-      solids.near(x, candidates);
+      candidates.clear();
+      solids.for_each_near(x, [&](std::size_t k) {
+        out.overflowed =
+            !append(candidates, SolidCandidate{static_cast<std::uint32_t>(k), false}) ||
+            out.overflowed;
+      });
+      if (out.overflowed) return out;
       anchor = x;
       listed = true;
     }
     const Real remaining = dt - t;
-    if (candidates.empty()) {
+    if (candidates.size() == 0) {
       // Free flight until the path may leave the support around the anchor.
       const Real room = support - (x - anchor).norm();
       const Real tau = std::min(remaining, time_to_move(room, v.norm(), acceleration.norm()));
@@ -113,42 +146,40 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       if (tau < remaining) listed = false;
       continue;
     }
-    // The forces at x and their derivatives; `active` marks the solids pressing now.
+    // The forces at x and their derivatives; a candidate is active where it presses now.
     Vec<D> force = m * acceleration;
     Mat stiffness = Mat::Zero(), damping = Mat::Zero();
     Vec<D> stiffness_times_solid_velocity = Vec<D>::Zero();
     Vec<D> spring_force = Vec<D>::Zero();
     Real approach = 0;  // the fastest approach along a contact's normal
     Real nearest_reach = support;
-    active.assign(candidates.size(), 0);
-    reactions.clear();
+    // Where the particle was at the last sub-step, seen from where solid k is now.
+    auto previous_seen_by = [&](std::uint32_t k) {
+      return Vec<D>(previous + (t - t_previous) * solids.velocity[k]);
+    };
+    bool any_body = false;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
-      const std::uint32_t k = candidates[c];
-      const bool on_body = on_bodies && solids.body_point[k] >= 0;
+      SolidCandidate& candidate = candidates[c];
+      const std::uint32_t k = candidate.index;
+      candidate.active = false;
+      any_body = any_body || solids.body_point[k] >= 0;
       const Vec<D>& vb = solids.velocity[k];
       const Vec<D> xb = solids.at(k, t);
       const Vec<D> rel = x - xb;
       const Real r2 = rel.squaredNorm();
-      if (r2 < h2 && settings.wall_friction > 0) {
-        // f_ns = -mu_w V_b lap W_visc (v - v_b), a force density, times the particle's volume.
-        const Real drag = settings.wall_friction * solids.volume[k] *
-                          settings.kernels.viscosity_laplacian(std::sqrt(r2)) * fluid_volume;
+      const Real drag = drag_of(k, x, t);
+      if (drag > 0) {
         force -= drag * (v - vb);
-        if (on_body) {
-          reactions.push_back(
-              {solids.body_point[k], -drag * (v - vb), Vec<D>::Zero(), 0, drag, vb});
-        }
         damping.diagonal().array() += drag;
       }
       nearest_reach = std::min(nearest_reach, solids.reach[k]);
-      // Where the particle was at the last sub-step, seen from where the solid is now.
-      const Vec<D> previous_here = previous + (t - t_previous) * vb;
+      const Vec<D> previous_here = previous_seen_by(k);
       // Out of reach and still on the side it came from: no contact (most candidates).
       if (r2 >= solids.reach[k] * solids.reach[k] && rel.dot(previous_here - xb) >= 0) continue;
       const PenaltyContact<D> p =
           penalty_contact<D>(settings.law, x, previous_here, v, xb, vb, solids.reach[k]);
       if (p.depth <= 0) continue;
-      active[c] = 1;
+      candidate.active = true;
       out.touched = true;
       out.crossed = out.crossed || p.crossed;
       // The spring's stiffness stays in the implicit step even where the law gives no force
@@ -157,14 +188,9 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       const Mat nn = p.normal * p.normal.transpose();
       stiffness += settings.law.stiffness * nn;
       stiffness_times_solid_velocity += settings.law.stiffness * p.normal.dot(vb) * p.normal;
-      const bool pulls = p.force.squaredNorm() == 0;
-      if (on_body) {
-        reactions.push_back({solids.body_point[k], p.force, p.normal, settings.law.stiffness,
-                             pulls ? 0 : settings.law.damping, vb});
-      }
       approach = std::max(approach, -(v - vb).dot(p.normal));
       spring_force += settings.law.stiffness * p.depth * p.normal;
-      if (pulls) continue;
+      if (p.force.squaredNorm() == 0) continue;  // the dashpot would pull
       force += p.force;
       damping += settings.law.damping * nn;
     }
@@ -192,8 +218,8 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
       const Vec<D> x_new = x + tau * v_new;
       bool late = false;
       for (std::size_t c = 0; c < candidates.size() && !late; ++c) {
-        const std::uint32_t k = candidates[c];
-        if (active[c]) continue;
+        const std::uint32_t k = candidates[c].index;
+        if (candidates[c].active) continue;
         const Real inside = solids.reach[k] - allowed;  // closer than this: pressing too deep
         late = inside > 0 && (x_new - solids.at(k, t + tau)).squaredNorm() < inside * inside;
       }
@@ -202,18 +228,30 @@ SolidStepResult<D> advance_against_solids(const SolidContactSettings<D>& setting
     }
     const Vec<D> impulse = m * (v_new - v) - tau * m * acceleration;
     out.impulse += impulse;
-    // Each body particle's share of the implicit step, f_c - tau K_c (v' - v_b) - C_c (v' - v):
-    // the shares add up to the impulse the fluid particle took, so momentum is kept.
-    for (const BodyForce& r : reactions) {
-      Vec<D> f = r.force;
-      if (r.normal.squaredNorm() > 0) {
-        f -= (tau * r.stiffness * r.normal.dot(v_new - r.solid_velocity) +
-              r.damping * r.normal.dot(v_new - v)) *
-             r.normal;
-      } else {
-        f -= r.damping * (v_new - v);
+    // Each body particle's share of the implicit step, f_c - tau K_c (v' - v_b) - C_c (v' - v)
+    // (the drag's, then the contact's, as the loop above took them): the shares add up to the
+    // impulse the fluid particle took, so momentum is kept.
+    if (on_bodies && any_body) {
+      for (std::size_t c = 0; c < candidates.size(); ++c) {
+        const std::uint32_t k = candidates[c].index;
+        const std::int32_t point = solids.body_point[k];
+        if (point < 0) continue;
+        const Vec<D>& vb = solids.velocity[k];
+        const Real drag = drag_of(k, x, t);
+        if (drag > 0) {
+          const Vec<D> f = -drag * (v - vb) - drag * (v_new - v);
+          out.overflowed = !on_bodies->add(point, -tau * f) || out.overflowed;
+        }
+        if (!candidates[c].active) continue;
+        const PenaltyContact<D> p = penalty_contact<D>(settings.law, x, previous_seen_by(k), v,
+                                                       solids.at(k, t), vb, solids.reach[k]);
+        const Real damping_c = p.force.squaredNorm() == 0 ? 0 : settings.law.damping;
+        const Vec<D> f = p.force - (tau * settings.law.stiffness * p.normal.dot(v_new - vb) +
+                                    damping_c * p.normal.dot(v_new - v)) *
+                                       p.normal;
+        out.overflowed = !on_bodies->add(point, -tau * f) || out.overflowed;
       }
-      on_bodies->push_back({r.body_point, -tau * f});
+      if (out.overflowed) return out;
     }
     out.peak_force = std::max(out.peak_force, impulse.norm() / tau);
     previous = x;

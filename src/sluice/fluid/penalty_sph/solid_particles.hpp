@@ -4,33 +4,82 @@
 // velocity from where it was to where the bodies' advance put it. The grids' cells are two
 // contact supports wide: a fluid particle collects the solids within two supports of where it
 // stands once, and the list serves every sub-step while it stays within one support of that
-// place (solid_contact_stepper.hpp).
+// place (solid_contact_stepper.hpp). SolidParticlesView is what the stepper reads, over the
+// host's arrays here or a device's copy (penalty_sph_device_run_impl.hpp).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
 
+#include "sluice/exec/host_device.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 #include "sluice/particles/particle_set.hpp"
 
 namespace sluice {
 
+// The solids over plain arrays: the fixed ones first, [0, fixed_count), then the bodies'.
 template <int D>
-struct SolidParticles {
-  // The fixed ones first, [0, fixed_count), then the bodies'.
-  std::vector<Vec<D>> position;  // at the start of the drift
-  std::vector<Vec<D>> velocity;  // fixed: zero; a body's: over the drift
-  std::vector<Real> reach;       // where a fluid particle starts to touch: (L_b + l0) / 2 [m]
-  std::vector<Real> volume;      // L_b^D, for the no-slip traction
-  std::vector<std::int32_t> body_point;  // a body's particle: its body point; else -1
-  std::size_t fixed_count = 0;
-  CellList<D> fixed_grid, moving_grid;
+struct SolidParticlesView {
+  const Vec<D>* position = nullptr;  // at the start of the drift
+  const Vec<D>* velocity = nullptr;  // fixed: zero; a body's: over the drift
+  const Real* reach = nullptr;       // where a fluid particle starts to touch: (L_b + l0) / 2 [m]
+  const Real* volume = nullptr;      // L_b^D, for the no-slip traction
+  const std::int32_t* body_point = nullptr;  // a body's particle: its body point; else -1
+  std::size_t fixed_count = 0, count = 0;
+  CellGridView<D> fixed_grid, moving_grid;  // cells two supports wide
   Real support = 0;  // the contact support S: no solid acts on a fluid particle beyond it
 
-  bool empty() const { return position.empty(); }
   // Where solid k is at time t of the drift.
-  Vec<D> at(std::size_t k, Real t) const { return position[k] + t * velocity[k]; }
+  SLUICE_HOST_DEVICE Vec<D> at(std::size_t k, Real t) const {
+    return position[k] + t * velocity[k];
+  }
+
+  // fn(k) for each solid k within two supports of x: the fixed ones, then the bodies', each in
+  // its grid's order.
+  template <class Fn>
+  SLUICE_HOST_DEVICE void for_each_near(const Vec<D>& x, Fn&& fn) const {
+    const Real r2 = 4 * support * support;
+    auto scan = [&](const CellGridView<D>& grid, std::size_t offset) {
+      grid.for_each_candidate_range(x.data(), [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::size_t k = offset + begin; k < offset + end; ++k) {
+          if ((x - position[k]).squaredNorm() < r2) fn(k);
+        }
+      });
+    };
+    if (fixed_count > 0) scan(fixed_grid, 0);
+    if (count > fixed_count) scan(moving_grid, fixed_count);
+  }
+};
+
+template <int D>
+struct SolidParticles {
+  std::vector<Vec<D>> position;  // SolidParticlesView's arrays
+  std::vector<Vec<D>> velocity;
+  std::vector<Real> reach;
+  std::vector<Real> volume;
+  std::vector<std::int32_t> body_point;
+  std::size_t fixed_count = 0;
+  CellList<D> fixed_grid, moving_grid;
+  Real support = 0;
+
+  bool empty() const { return position.empty(); }
+
+  SolidParticlesView<D> view() const {
+    SolidParticlesView<D> v;
+    v.position = position.data();
+    v.velocity = velocity.data();
+    v.reach = reach.data();
+    v.volume = volume.data();
+    v.body_point = body_point.data();
+    v.fixed_count = fixed_count;
+    v.count = position.size();
+    v.fixed_grid = fixed_grid.view();
+    v.moving_grid = moving_grid.view();
+    v.support = support;
+    return v;
+  }
 
   // Every non-fluid particle of `particles` that is not a body's, with its spacing from
   // `spacing` (L_b), for fluid particles of spacing `fluid_spacing`; `min_support` (the
@@ -67,16 +116,7 @@ struct SolidParticles {
   // The solids within two supports of x, into `out` (cleared first).
   void near(const Vec<D>& x, std::vector<std::uint32_t>& out) const {
     out.clear();
-    const Real r2 = 4 * support * support;
-    auto scan = [&](const CellList<D>& grid, std::size_t offset) {
-      grid.for_each_candidate_range(x, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::size_t k = offset + begin; k < offset + end; ++k) {
-          if ((x - position[k]).squaredNorm() < r2) out.push_back(static_cast<std::uint32_t>(k));
-        }
-      });
-    };
-    if (fixed_count > 0) scan(fixed_grid, 0);
-    if (position.size() > fixed_count) scan(moving_grid, fixed_count);
+    view().for_each_near(x, [&](std::size_t k) { out.push_back(static_cast<std::uint32_t>(k)); });
   }
 
  private:
