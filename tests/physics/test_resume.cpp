@@ -101,6 +101,11 @@ const ResumeCase kCases[] = {
     // mps on its device: the neighbour list the next prediction reads, written and read back;
     // the particles keep the order and cells of their last sort, though they have moved since.
     {"mps_device_body", "floating_box_2d.yaml", 0.2, {"model={name: mps, device: emulated}"}},
+    // penalty-sph on its device: the walls gathered again there after reading.
+    {"penalty_sph_device_body",
+     "floating_box_2d.yaml",
+     0.2,
+     {"model={name: penalty-sph, device: emulated}"}},
     {"wcsph_3d_cubes", "dam_break_cubes_3.yaml", 0.04, {"spacing=0.05"}},
     {"bodies_alone_joints", "pendulum.yaml", 0.4, {}},
     {"bodies_alone_complementarity", "sphere_stack.yaml", 0.4, {}},

@@ -233,7 +233,7 @@ void ParticleFluid<D>::receive_body_motion(const std::vector<BodyKinematics>& mo
 template <int D>
 std::vector<Wrench> ParticleFluid<D>::body_loads(const std::vector<BodyKinematics>& motion) const {
   if (body_points_.size() == 0) return std::vector<Wrench>(body_count_);
-  refresh_host();  // a model's forces on the body points read the host's set
+  if (body_forces_read_particles()) refresh_host();  // a model's forces read the host's set
   std::vector<Vec3> force(body_points_.size(), Vec3::Zero());
   body_point_forces(motion, force);
   return body_points_.loads(force, motion, body_count_);

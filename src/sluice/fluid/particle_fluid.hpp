@@ -102,6 +102,9 @@ class ParticleFluid : public FluidSystem,
   // point, zero on entry.
   virtual void body_point_forces(const std::vector<BodyKinematics>& motion,
                                  std::vector<Vec3>& force) const = 0;
+  // Whether body_point_forces reads the particle set (else a device's particles are not copied
+  // back for it, at each exchange with the bodies).
+  virtual bool body_forces_read_particles() const { return true; }
   // A model whose particles live elsewhere (on a device) copies them into the particle set
   // here; whatever reads the particle set (output, probes, the check, checkpoints) calls it
   // first. The base copies the emulated device's particles back; nothing otherwise.

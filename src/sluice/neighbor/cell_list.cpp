@@ -8,20 +8,30 @@
 namespace sluice {
 
 template <int D>
-CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius) {
-  grid_.cell_size = radius;
-  grid_.inverse_cell_size = 1 / radius;
+CellGridView<D> cell_grid_over(const Vec<D>& lo, const Vec<D>& hi, Real radius,
+                               std::size_t& cells) {
+  CellGridView<D> grid;
+  grid.cell_size = radius;
+  grid.inverse_cell_size = 1 / radius;
   std::size_t total = 1;
   for (int a = 0; a < D; ++a) {
-    grid_.lo[a] = lo[a];
-    grid_.counts[a] =
-        static_cast<int>(std::ceil((hi[a] - lo[a]) * grid_.inverse_cell_size)) + 1 + 2 * kReach;
-    total *= static_cast<std::size_t>(grid_.counts[a]);
+    grid.lo[a] = lo[a];
+    grid.counts[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) * grid.inverse_cell_size)) + 1 +
+                     2 * CellGridView<D>::kReach;
+    total *= static_cast<std::size_t>(grid.counts[a]);
   }
   if (total > (std::size_t{1} << 31)) {
     throw std::runtime_error("the domain holds too many neighbour cells; enlarge the spacing");
   }
-  cell_start_.assign(total + 1, 0);
+  cells = total;
+  return grid;
+}
+
+template <int D>
+CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius) {
+  std::size_t cells = 0;
+  grid_ = cell_grid_over<D>(lo, hi, radius, cells);
+  cell_start_.assign(cells + 1, 0);
 }
 
 template <int D>
@@ -40,6 +50,8 @@ void CellList<D>::sort(const std::vector<Vec<D>>& positions, std::vector<std::ui
   for (std::size_t i = 0; i < n; ++i) order[next[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
+template CellGridView<2> cell_grid_over(const Vec<2>&, const Vec<2>&, Real, std::size_t&);
+template CellGridView<3> cell_grid_over(const Vec<3>&, const Vec<3>&, Real, std::size_t&);
 template class CellList<2>;
 template class CellList<3>;
 

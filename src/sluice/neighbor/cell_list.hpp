@@ -127,6 +127,11 @@ struct CellGridView {
   }
 };
 
+// The grid of cells of edge `radius` that covers [lo, hi], padded by kReach cells on each side
+// (without cell starts), and into `cells` its count of cells.
+template <int D>
+CellGridView<D> cell_grid_over(const Vec<D>& lo, const Vec<D>& hi, Real radius, std::size_t& cells);
+
 template <int D>
 class CellList {
  public:

@@ -71,6 +71,22 @@ Drop drop(Real stiffness, Real solid_spacing, Real x0, Real y0, int steps) {
   return d;
 }
 
+TEST(SolidContactStepper, ABoundedListTooShortVoidsTheStep) {
+  // A device's scratch (BoundedList) holds 4 solids; on the layer the particle meets dozens.
+  const SolidParticles<3> solids = layer(0.002);
+  BoundedList<SolidCandidate, 4> scratch;
+  Vec3 x(0.05, 0.05, 0.002), v(0, 0, -1);
+  const auto r = advance_against_solids<3>(settings(5e4), solids.view(), x, v, kMass, kDensity,
+                                           kGravity, 0.01, scratch);
+  EXPECT_TRUE(r.overflowed);
+  // With room for all of them, the same step holds.
+  BoundedList<SolidCandidate, 512> room;
+  Vec3 y(0.05, 0.05, 0.002), w(0, 0, -1);
+  EXPECT_FALSE(advance_against_solids<3>(settings(5e4), solids.view(), y, w, kMass, kDensity,
+                                         kGravity, 0.01, room)
+                   .overflowed);
+}
+
 TEST(SolidContactStepper, AStiffLayerStopsAndHoldsAFallingParticle) {
   // Ks = 5e4 N/m on 0.002 m solids: at rest the springs carry the weight m g.
   for (const Real x0 : {0.051, 0.05, 0.0513}) {

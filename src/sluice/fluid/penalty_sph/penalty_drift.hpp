@@ -97,6 +97,24 @@ struct PenaltyDrift {
   }
 };
 
+// Whether fluid particle i stays out of the bodies' reach over a step of dt, however fast
+// either moves: the bodies' particles lie within [lo, hi] and move at most at body_speed.
+template <int D>
+struct PenaltyOutOfBodiesReach {
+  const Vec<D>* position;
+  const Vec<D>* half_velocity;
+  const Vec<D>* acceleration;
+  Vec<D> lo, hi;
+  Real body_speed, support, dt;
+  SLUICE_HOST_DEVICE bool operator()(std::size_t i) const {
+    const Real travel =
+        (half_velocity[i].norm() + body_speed) * dt + acceleration[i].norm() * dt * dt;
+    const Real margin = 2 * support + 2 * travel;
+    return ((position[i] - lo).array() < -margin).any() ||
+           ((position[i] - hi).array() > margin).any();
+  }
+};
+
 // The step's drift is done: the end-of-step velocity predicted for the viscosity, and the
 // boundary force, the drift's impulse over the step.
 template <int D>

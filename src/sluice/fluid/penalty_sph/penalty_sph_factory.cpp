@@ -27,6 +27,7 @@ ModelEntry penalty_sph_entry() {
   };
   entry.size.bytes_per_element = 550;  // measured: docs/output.md
   entry.schemes = {"spring-exchanges"};
+  entry.devices = {"cpu", "emulated"};
   return entry;
 }
 

@@ -24,6 +24,7 @@
 #include "sluice/fluid/penalty_sph/lattice_sums.hpp"
 #include "sluice/fluid/penalty_sph/layer_passage.hpp"
 #include "sluice/fluid/penalty_sph/penalty_drift.hpp"
+#include "sluice/fluid/penalty_sph/penalty_sph_device_run.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_loop_bodies.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
@@ -72,6 +73,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
                        settings_.law.stiffness, settings_.law.damping, p_.wall_friction);
     out += fmt::format(", {} solid layer(s)", p_.solids.size());
     if (p_.time_step > 0) out += fmt::format(", fixed dt = {} s", p_.time_step);
+    if (device_) {
+      out += fmt::format(", on {} ({:.0f} bytes per particle there)", device_->name(),
+                         device_->bytes_per_particle());
+    }
     return out + layer_stiffness_advice<D>(p_, config_, particle_mass_);
   }
 
@@ -98,6 +103,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
     compute_density();
     compute_forces();
     measure_extremes();
+    if (p_.emulated_device) start_device();
   }
 
   TimeStep next_time_step() const override {
@@ -147,16 +153,13 @@ class PenaltySphModel final : public ParticleFluid<D> {
 
  protected:
   // The walls and fixed layers are gathered at the first step and never move: read back, they
-  // are gathered again.
+  // are gathered again at the next.
   void archive_model(StateArchive& a) override {
     // The bodies' start positions and impulses are not kept: the next step's drift and its
     // first exchange rewrite them before anything reads them.
     a(max_speed_, max_acceleration_, body_pressure_force_);
     a(steps_, fluid_steps_, contacts_, crossings_, substeps_, force_sum_, peak_force_);
-    if (a.reading() && steps_ > 0) {
-      auto& ps = this->state().particles;
-      solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
-    }
+    if (a.reading()) solids_gathered_ = false;  // gathered again at the next step
   }
 
   void model_stages(StageList& before, StageList& after) override {
@@ -235,6 +238,16 @@ class PenaltySphModel final : public ParticleFluid<D> {
     return body.seen_as_one_particle ? &body : nullptr;
   }
 
+  // The device run (model.device: emulated), from the host's particles as initialize() left
+  // them; the base owns it and runs its own services there, the model its stages.
+  void start_device() {
+    const PenaltySphDeviceSetup<D> setup{this->device_setup(), constants(), settings_,
+                                         config_.spacing};
+    std::unique_ptr<PenaltySphDeviceRun<D>> run = make_penalty_sph_emulated_run<D>(setup);
+    device_ = run.get();
+    this->run_on_device(std::move(run));
+  }
+
   // The particles sorted by cell again, over a box that holds the solid layers too.
   void sort_again() {
     ParticleState<D>& s = this->state();
@@ -254,14 +267,23 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // the particle). With bodies, only the particles that cannot meet one within the step drift
   // now; the rest drift with the bodies, exchange by exchange (advance_with_bodies).
   void kick_drift(Real dt) {
-    auto& ps = this->state().particles;
-    const auto& a = ps[acceleration_];
-    auto& half = ps[half_velocity_];
-    // Walls and fixed solid layers stand still: gathered once.
-    if (steps_ == 0) solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
-    step_results_.assign(ps.size(), {});
     step_dt_ = dt;
     drifted_ = 0;
+    if (device_) {
+      this->on_device([&] {
+        if (!solids_gathered_) device_->gather_fixed_solids();
+        device_->half_kick(dt);
+        device_->start_drift(dt, has_bodies_);
+      });
+      solids_gathered_ = true;
+      if (!has_bodies_) finish_drift();
+      return;
+    }
+    auto& ps = this->state().particles;
+    // Walls and fixed solid layers stand still: gathered once.
+    if (!solids_gathered_) solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
+    solids_gathered_ = true;
+    step_results_.assign(ps.size(), {});
     exec::Default::for_each(ps.size(), PenaltyHalfKick<D>{arrays(), dt});
     if (!has_bodies_) {
       drifting_.clear();
@@ -290,13 +312,16 @@ class PenaltySphModel final : public ParticleFluid<D> {
     solids_.gather_moving(ps, ps[solid_spacing_], body_particles_, body_start_, 0);
     std::vector<std::uint32_t> far;
     drifting_.clear();
+    const PenaltyOutOfBodiesReach<D> out_of_reach{ps.position.data(),
+                                                  ps[half_velocity_].data(),
+                                                  ps[acceleration_].data(),
+                                                  lo,
+                                                  hi,
+                                                  body_speed,
+                                                  solids_.support,
+                                                  dt};
     for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (!ps.is_fluid(i)) continue;
-      const Real travel = (half[i].norm() + body_speed) * dt + a[i].norm() * dt * dt;
-      const Real margin = 2 * solids_.support + 2 * travel;
-      const bool out_of_reach = ((ps.position[i] - lo).array() < -margin).any() ||
-                                ((ps.position[i] - hi).array() > margin).any();
-      (out_of_reach ? far : drifting_).push_back(static_cast<std::uint32_t>(i));
+      if (ps.is_fluid(i)) (out_of_reach(i) ? far : drifting_).push_back(std::uint32_t(i));
     }
     drift(far, dt, false);
   }
@@ -304,12 +329,20 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // One exchange with the bodies: they have advanced by dt and the fluid's body particles
   // stand where they now are; the fluid particles in their reach drift by dt against them.
   void advance_with_bodies(double dt) override {
-    auto& ps = this->state().particles;
-    solids_.gather_moving(ps, ps[solid_spacing_], body_particles_, body_start_, dt);
-    drift(drifting_, dt, true);
+    if (device_) {
+      this->on_device([&] { device_->drift_with_bodies(dt, body_impulse_); });
+      last_dt_ = dt;
+    } else {
+      auto& ps = this->state().particles;
+      solids_.gather_moving(ps, ps[solid_spacing_], body_particles_, body_start_, dt);
+      drift(drifting_, dt, true);
+    }
     drifted_ += dt;
     if (drifted_ >= step_dt_ * (1 - 1e-9)) finish_drift();
   }
+
+  // The bodies' loads are the model's own sums (body_point_forces): no particle is read.
+  bool body_forces_read_particles() const override { return false; }
 
   // The bodies hang on the fluid by springs of Ks each: the coupler exchanges often enough
   // for the lightest of them.
@@ -341,6 +374,11 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // The step's drift is done: the end-of-step velocity predicted for the viscosity, the
   // boundary force, the counters and which particles passed a layer.
   void finish_drift() {
+    if (device_) {
+      typename PenaltySphDeviceRun<D>::Totals totals;
+      this->on_device([&] { totals = device_->finish_drift(step_dt_); });
+      return add_counters(totals);
+    }
     auto& ps = this->state().particles;
     const PenaltySphArrays<D> a = arrays();
     exec::Default::for_each(
@@ -372,11 +410,13 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
   void kick(Real dt) {
+    if (device_) return this->on_device([&] { device_->kick(dt); });
     exec::Default::for_each(this->state().particles.size(), PenaltyKick<D>{arrays(), dt});
   }
 
   // The density by summation and its pressure (PenaltyDensity).
   void compute_density() {
+    if (device_) return this->on_device([&] { device_->density(); });
     const ParticleState<D>& s = this->state();
     exec::Default::for_each_balanced(s.particles.size(),
                                      PenaltyDensity<D>{arrays(), constants(), s.cells.view()});
@@ -385,6 +425,12 @@ class PenaltySphModel final : public ParticleFluid<D> {
   // The fluid's own force per unit mass, gravity and buoyancy included (PenaltyForces); the
   // solids act in the drift.
   void compute_forces() {
+    if (device_) {
+      return this->on_device([&] {
+        device_->forces();
+        if (has_bodies_) device_->body_pressure_forces(body_pressure_force_);
+      });
+    }
     const ParticleState<D>& s = this->state();
     exec::Default::for_each_balanced(s.particles.size(),
                                      PenaltyForces<D>{arrays(), constants(), s.cells.view()});
@@ -403,6 +449,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
 
   // 1/2 Ks d^2 over the fluid-solid pairs in contact now, summed in index order.
   double elastic_energy() const {
+    if (device_) return device_->elastic_energy();
     const auto& ps = this->state().particles;
     const PenaltyElasticEnergy<D> energy{reinterpret_cast<const std::int32_t*>(ps.kind.data()),
                                          ps.position.data(), solids_.view(),
@@ -413,6 +460,11 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
   void measure_extremes() {
+    if (device_) {
+      max_speed_ = device_->max_speed();
+      max_acceleration_ = device_->max_acceleration();
+      return;
+    }
     const std::size_t n = this->state().particles.size();
     const PenaltySphArrays<D> a = arrays();
     max_speed_ = exec::Default::max_of(n, FluidVectorNorm<D>{a.kind, a.velocity});
@@ -446,6 +498,8 @@ class PenaltySphModel final : public ParticleFluid<D> {
   std::vector<Vec<D>> body_pressure_force_;  // per body point [N], on the body
   Real last_dt_ = 1;
   bool has_bodies_ = false;
+  bool solids_gathered_ = false;  // the walls and fixed layers, in solids_ or on the device
+  PenaltySphDeviceRun<D>* device_ = nullptr;  // with model.device: emulated (the base owns it)
   Real max_speed_ = 0, max_acceleration_ = 0;
   long steps_ = 0, fluid_steps_ = 0, contacts_ = 0, crossings_ = 0, substeps_ = 0;
   double force_sum_ = 0, peak_force_ = 0;

@@ -64,6 +64,13 @@ PenaltySphParameters read_penalty_sph_parameters(const io::CaseConfig& config) {
     // Each fluid particle marks the layers it started above in the bits of one int32.
     if (p.solids.size() > 31) model.fail("solids", "at most 31 solid layers");
   }
+  p.emulated_device =
+      model.optional_choice("device", "cpu", "device", {"cpu", "emulated"}) == "emulated";
+  if (p.emulated_device && !p.solids.empty()) {
+    model.fail("device",
+               "the emulated device runs penalty-sph without solid layers (model.solids); "
+               "run this case with device: cpu");
+  }
   model.finish();
 
   if (p.max_speed == 0) p.max_speed = free_fall_speed(config);

@@ -41,6 +41,9 @@ struct PenaltySphParameters {
   double time_step = 0;                 // a fixed step [s]; 0 = the stability limits
   double cfl = 0.25;
   std::vector<SolidLayerConfig> solids;
+  // Where the step's loops run: the host's particle set, or the emulated device's copy of it
+  // (penalty_sph_device_run.hpp), which gives the same answer to the bit. Not with solids.
+  bool emulated_device = false;
 
   // h for the spacing: the radius of a sphere (3D) or disc (2D) holding kernel_particles.
   double smoothing_length(double spacing, int dimension) const;
