@@ -21,6 +21,7 @@
 #include <algorithm>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -40,8 +41,10 @@ struct PenaltyContact {
 // f_np on a fluid particle now at x, at x_previous at the start of the step, moving at v, from
 // a solid particle at xb moving at vb, touching at `reach`.
 template <int D>
-PenaltyContact<D> penalty_contact(const PenaltyLaw& law, const Vec<D>& x, const Vec<D>& x_previous,
-                                  const Vec<D>& v, const Vec<D>& xb, const Vec<D>& vb, Real reach) {
+SLUICE_HOST_DEVICE PenaltyContact<D> penalty_contact(const PenaltyLaw& law, const Vec<D>& x,
+                                                     const Vec<D>& x_previous, const Vec<D>& v,
+                                                     const Vec<D>& xb, const Vec<D>& vb,
+                                                     Real reach) {
   PenaltyContact<D> c;
   const Vec<D> from_previous = x_previous - xb;
   const Real previous_distance = from_previous.norm();

@@ -9,13 +9,12 @@
 // order, and the drift's sums come out the same.
 #pragma once
 
-#include <fmt/format.h>
-
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "sluice/fluid/fluid_vector_norm.hpp"
@@ -192,6 +191,13 @@ struct PointImpulse {
   }
 };
 
+// The step's results start from nothing.
+template <int D>
+struct ZeroResult {
+  SolidStepResult<D>* results;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const { results[i] = SolidStepResult<D>{}; }
+};
+
 }  // namespace penalty_device
 
 template <int D, class Backend>
@@ -285,7 +291,7 @@ class PenaltySphDeviceRunOn final
   }
 
   void start_drift(Real dt, bool with_bodies) override {
-    base_.for_each(ZeroResult{results_.data()});
+    base_.for_each(penalty_device::ZeroResult<D>{results_.data()});
     if (!with_bodies) return drift_all_fluid(dt);
     const PenaltySphArrays<D> a = arrays();
     // The bodies' particles in index order, which the last sort changed.
@@ -362,11 +368,6 @@ class PenaltySphDeviceRunOn final
   }
 
  private:
-  struct ZeroResult {
-    SolidStepResult<D>* results;
-    SLUICE_HOST_DEVICE void operator()(std::size_t i) const { results[i] = SolidStepResult<D>{}; }
-  };
-
   template <class T>
   static T* mutable_data(const Array<T>& a) {
     return const_cast<T*>(a.data());
@@ -510,11 +511,14 @@ class PenaltySphDeviceRunOn final
 
   void check_overflow() const {
     if (base_.max_of(typename PenaltyStepCounters<D>::Overflowed{results_.data()}) > 0) {
-      throw std::runtime_error(fmt::format(
-          "penalty-sph on the {} device: a fluid particle met more than {} solid particles "
-          "within two contact supports, or touched more than {} body particles in one "
-          "exchange: more than the device's lists hold; run this case with model.device: cpu",
-          Backend::name(), Scratch::kCandidates, Scratch::kTally));
+      // (No fmt here: this header is compiled by nvcc too, which fmt's headers do not pass.)
+      throw std::runtime_error(
+          "penalty-sph on the " + Backend::name() + " device: a fluid particle met more than " +
+          std::to_string(Scratch::kCandidates) +
+          " solid particles within two contact supports, or touched more than " +
+          std::to_string(Scratch::kTally) +
+          " body particles in one exchange: more than the device's lists hold; run this case "
+          "with model.device: cpu");
     }
   }
 

@@ -26,6 +26,8 @@ ModelEntry penalty_sph_entry() {
     for (io::BodyConfig& b : free_solid_grains(config)) config.bodies.push_back(std::move(b));
   };
   entry.size.bytes_per_element = 550;  // measured: docs/output.md
+  // On the emulated device (docs/performance.md).
+  entry.size.device_bytes_per_element = [](int dimension) { return dimension == 2 ? 400 : 504; };
   entry.schemes = {"spring-exchanges"};
   entry.devices = {"cpu", "emulated"};
   return entry;

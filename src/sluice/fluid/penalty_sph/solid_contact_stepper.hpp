@@ -19,6 +19,7 @@
 #pragma once
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -36,6 +37,19 @@ namespace sluice {
 // the root of speed t + acceleration t^2 / 2 = distance.
 SLUICE_HOST_DEVICE inline Real time_to_move(Real distance, Real speed, Real acceleration) {
   return 2 * distance / (speed + std::sqrt(speed * speed + 2 * acceleration * distance));
+}
+
+// x of a x = b for a sub-step's symmetric positive definite D x D matrix: Eigen's Cholesky on
+// the host (and on the emulated device, so that both give the same bits); on a GPU, where
+// Eigen's decompositions do not run, its closed-form inverse of a small fixed-size matrix.
+template <int D>
+SLUICE_HOST_DEVICE inline Vec<D> solve_symmetric_positive(const Eigen::Matrix<Real, D, D>& a,
+                                                          const Vec<D>& b) {
+#if defined(__CUDA_ARCH__)
+  return a.inverse() * b;
+#else
+  return a.llt().solve(b);
+#endif
 }
 
 template <int D>
@@ -207,9 +221,9 @@ SLUICE_HOST_DEVICE SLUICE_ONE_HOST_COPY SolidStepResult<D> advance_against_solid
     for (;;) {
       const Mat inertia = inertia_of_v + tau * damping;
       // The springs shorten by tau (v' - v_b) . n over the sub-step.
-      v_new = (inertia + tau * tau * stiffness)
-                  .llt()
-                  .solve(inertia * v + tau * force + tau * tau * stiffness_times_solid_velocity);
+      v_new = solve_symmetric_positive<D>(
+          inertia + tau * tau * stiffness,
+          inertia * v + tau * force + tau * tau * stiffness_times_solid_velocity);
       // ...unless it would start to press on another solid deeper than an impact resolved
       // in fifths of 1/omega does: a spring switched on late stores energy it never took.
       if (tau <= shortest) break;
