@@ -38,8 +38,9 @@ struct ModelSize {
   // The elements of a case where they are not the particles of its geometry (a grid's cells);
   // empty: the particles of its fluid blocks, wall layers and bodies.
   std::function<double(const io::CaseConfig&)> elements;
-  // Device memory per element on a GPU, by dimension; empty where the model has no GPU run.
-  std::function<double(int dimension)> gpu_bytes_per_element;
+  // Memory per element of the model's device run, by dimension: a GPU's, or on the emulated
+  // device host memory beside the host's own copy; empty where the model has no device run.
+  std::function<double(int dimension)> device_bytes_per_element;
 };
 
 // Everything sluice knows of a model: how to build it, what it changes in the case, its size,

@@ -20,6 +20,12 @@ const double kPi = std::acos(-1.0);
 // `wcsph` keeps its own (docs/output.md).
 constexpr double kBodyParticleBytes = 500;
 
+// The case's model.device, or "cpu".
+std::string device_of(const io::CaseConfig& config) {
+  const YAML::Node device = config.model["device"];
+  return device && device.IsScalar() ? device.Scalar() : "cpu";
+}
+
 // Product of the box's extents along the case's axes (2D: x and z).
 double measure(const Vec3& extent, int dimension) {
   return dimension == 2 ? extent[0] * extent[2] : extent[0] * extent[1] * extent[2];
@@ -96,6 +102,9 @@ SizeEstimate estimate_size(const io::CaseConfig& config, const ModelRegistry& mo
     for (const auto& body : config.bodies) out.elements += body_volume(body, dim) / cell_volume;
   }
   out.bytes = out.elements * size.bytes_per_element;
+  // The emulated device's copy lives in the host's memory beside the host's own.
+  if (size.device_bytes_per_element && device_of(config) == "emulated")
+    out.bytes += out.elements * size.device_bytes_per_element(dim);
   return out;
 }
 
@@ -108,9 +117,9 @@ double machine_memory_bytes() {
 bool runs_on_a_gpu(const io::CaseConfig& config, const ModelRegistry& models) {
   if (!config.has_fluid()) return false;
   const ModelEntry* model = models.find(config.model_name);
-  if (model == nullptr || !model->size.gpu_bytes_per_element) return false;
-  const YAML::Node device = config.model["device"];
-  return device && device.IsScalar() && device.Scalar() == "gpu";
+  if (model == nullptr || !model->size.device_bytes_per_element) return false;
+  return device_of(config) == "gpu" &&
+         std::find(model->devices.begin(), model->devices.end(), "gpu") != model->devices.end();
 }
 
 bool runs_on_a_gpu(const io::CaseConfig& config) {
@@ -125,8 +134,8 @@ void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstim
 void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstimate& estimate,
                                    const exec::DeviceMemory& gpu, const ModelRegistry& models) {
   const ModelEntry* model = models.find(config.model_name);
-  if (model == nullptr || !model->size.gpu_bytes_per_element) return;
-  const double needed = estimate.elements * model->size.gpu_bytes_per_element(config.dimension);
+  if (model == nullptr || !model->size.device_bytes_per_element) return;
+  const double needed = estimate.elements * model->size.device_bytes_per_element(config.dimension);
   if (gpu.free_bytes <= 0 || needed <= gpu.free_bytes) return;
   throw InputError(config.spacing_place.first, config.spacing_place.second, "spacing",
                    fmt::format("at {} m the case needs about {:.3g} particles and {} of the "

@@ -38,7 +38,7 @@ bool runs_on_a_gpu(const io::CaseConfig& config, const ModelRegistry& models);
 bool runs_on_a_gpu(const io::CaseConfig& config);  // with sluice's shipped models
 
 // Throws InputError at the case's `spacing` when the estimate's elements need more of the
-// GPU's memory (the model's gpu_bytes_per_element) than `gpu` has free; nothing when its free
+// GPU's memory (the model's device_bytes_per_element) than `gpu` has free; nothing when its free
 // memory is unknown (0) or the model has no GPU run.
 void refuse_if_the_gpu_cannot_hold(const io::CaseConfig& config, const SizeEstimate& estimate,
                                    const exec::DeviceMemory& gpu, const ModelRegistry& models);

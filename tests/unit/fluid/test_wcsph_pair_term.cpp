@@ -27,7 +27,7 @@ TEST(WcsphPairTerm, EqualAndOppositeAndNothingOnItself) {
   double worst = 0;
   for (int trial = 0; trial < 200; ++trial) {
     PackedParticles packed;
-    packed.resize(2);
+    packed.resize(2, 2);
     double mass[2], laminar[2];
     for (int i = 0; i < 2; ++i) {
       const double rho = 1000 * (1 + 0.02 * unit(random));

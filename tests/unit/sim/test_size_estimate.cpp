@@ -88,6 +88,18 @@ TEST(SizeEstimate, OnlyWcsphWithDeviceGpuRunsOnAGpu) {
   EXPECT_FALSE(runs_on_a_gpu(on_device(tank_case(3, "mps", 0.05), "gpu")));
 }
 
+TEST(SizeEstimate, TheEmulatedDeviceAddsItsCopyToTheHostsMemory) {
+  for (const char* model : {"wcsph", "mps", "penalty-sph"}) {
+    const io::CaseConfig config = tank_case(3, model, 0.01);
+    const SizeEstimate cpu = estimate_size(config);
+    const SizeEstimate emulated = estimate_size(on_device(config, "emulated"));
+    EXPECT_EQ(emulated.elements, cpu.elements) << model;
+    const double per_element = (emulated.bytes - cpu.bytes) / cpu.elements;
+    EXPECT_GT(per_element, 300) << model;  // the device's fields, at least the host's in bytes
+    EXPECT_LT(per_element, 1000) << model;
+  }
+}
+
 TEST(SizeEstimate, RefusesACaseThatCannotFitInTheGpusFreeMemory) {
   const io::CaseConfig config = on_device(tank_case(3, "wcsph", 0.002), "gpu");
   const SizeEstimate estimate = estimate_size(config);

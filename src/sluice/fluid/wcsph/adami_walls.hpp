@@ -16,14 +16,14 @@
 
 namespace sluice {
 
-// Kernel-weighted sums over the fluid particles in [begin, end) around wall particle w.
+// Kernel-weighted sums over the fluid particles [begin, end) of the fluid's own arrays (the
+// fluid particles alone, PackedParticles::fluid_position ...) around wall particle w.
 struct AdamiWallSums {
   double weight = 0, pressure = 0;
   double rho_r[3] = {0, 0, 0}, velocity[3] = {0, 0, 0};
 };
 
-// `p` by value, as a local copy: the SIMD sums split as they always have (the same results to
-// the bit).
+// `p` by value, as a local copy, as the rates' loop reads it.
 template <class Kernel>
 SLUICE_HOST_DEVICE inline void add_adami_wall_sums(const PackedParticles::View p,
                                                    const Kernel& kernel, std::size_t w,
@@ -35,18 +35,17 @@ SLUICE_HOST_DEVICE inline void add_adami_wall_sums(const PackedParticles::View p
 #pragma omp simd reduction(+ : sw, sp, srx, sry, srz, svx, svy, svz)
 #endif
   for (std::size_t f = begin; f < end; ++f) {
-    const float rx = xw - p.x[f], ry = yw - p.y[f], rz = zw - p.z[f];
-    const float weight =
-        p.fluid[f] * kernel.value_branchless(std::sqrt(rx * rx + ry * ry + rz * rz));
-    const float rho_weight = p.density[f] * weight;
+    const float rx = xw - p.fluid_x[f], ry = yw - p.fluid_y[f], rz = zw - p.fluid_z[f];
+    const float weight = kernel.value_branchless(std::sqrt(rx * rx + ry * ry + rz * rz));
+    const float rho_weight = p.fluid_density[f] * weight;
     sw += weight;
-    sp += p.pressure[f] * weight;
+    sp += p.fluid_pressure[f] * weight;
     srx += rho_weight * rx;
     sry += rho_weight * ry;
     srz += rho_weight * rz;
-    svx += weight * p.vx[f];
-    svy += weight * p.vy[f];
-    svz += weight * p.vz[f];
+    svx += weight * p.fluid_vx[f];
+    svy += weight * p.fluid_vy[f];
+    svz += weight * p.fluid_vz[f];
   }
   out.weight += sw;
   out.pressure += sp;
@@ -75,9 +74,13 @@ struct AdamiWall {
       wet = wet || packed.has_fluid(begin, end);
     });
     if (wet) {
+      // A range of the particles holds the fluid particles [fluid_before[begin],
+      // fluid_before[end]) of the fluid's own arrays, in the same order.
       cells.for_each_clipped_range(f.position + D * w, [&](std::uint32_t begin, std::uint32_t end) {
-        if (packed.has_fluid(begin, end))
-          add_adami_wall_sums(packed, c.kernel, w, begin, end, sums);
+        if (packed.has_fluid(begin, end)) {
+          add_adami_wall_sums(packed, c.kernel, w, packed.fluid_before[begin],
+                              packed.fluid_before[end], sums);
+        }
       });
     }
     if (sums.weight > 0) {

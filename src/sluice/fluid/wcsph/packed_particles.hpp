@@ -26,12 +26,18 @@ struct PackedParticles {
   std::vector<float> fluid;                 // 1 for fluid, 0 for boundary particles
   std::vector<float> viscous_weight;        // 1 where viscosity acts on the pair partner, else 0
   std::vector<std::uint32_t> fluid_before;  // fluid particles among indices [0, k); size n + 1
+  // The fluid particles alone, in index order (fluid particle i at fluid_before[i]): what the
+  // walls' loop reads, so that its candidates hold no wall particle, which would add nothing.
+  std::array<std::vector<float>, 3> fluid_position, fluid_velocity;
+  std::vector<float> fluid_density, fluid_pressure;
 
   // Raw pointers for the SIMD loops (they only read, so aliasing does not matter).
   struct View {
     const float *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz;
     const float *density, *pressure, *pressure_term, *volume, *fluid, *viscous_weight;
     const std::uint32_t* fluid_before;
+    const float *fluid_x, *fluid_y, *fluid_z, *fluid_vx, *fluid_vy, *fluid_vz;
+    const float *fluid_density, *fluid_pressure;
     SLUICE_HOST_DEVICE bool has_fluid(std::uint32_t begin, std::uint32_t end) const {
       return fluid_before[end] != fluid_before[begin];
     }
@@ -43,6 +49,9 @@ struct PackedParticles {
     float* viscous_velocity[3];
     float *density, *pressure, *pressure_term, *volume, *fluid, *viscous_weight;
     std::uint32_t* fluid_before;
+    float* fluid_position[3];
+    float* fluid_velocity[3];
+    float *fluid_density, *fluid_pressure;
     View view() const {
       return {position[0],
               position[1],
@@ -59,7 +68,15 @@ struct PackedParticles {
               volume,
               fluid,
               viscous_weight,
-              fluid_before};
+              fluid_before,
+              fluid_position[0],
+              fluid_position[1],
+              fluid_position[2],
+              fluid_velocity[0],
+              fluid_velocity[1],
+              fluid_velocity[2],
+              fluid_density,
+              fluid_pressure};
     }
   };
   Arrays arrays() {
@@ -72,7 +89,11 @@ struct PackedParticles {
             volume.data(),
             fluid.data(),
             viscous_weight.data(),
-            fluid_before.data()};
+            fluid_before.data(),
+            {fluid_position[0].data(), fluid_position[1].data(), fluid_position[2].data()},
+            {fluid_velocity[0].data(), fluid_velocity[1].data(), fluid_velocity[2].data()},
+            fluid_density.data(),
+            fluid_pressure.data()};
   }
   View view() const { return const_cast<PackedParticles*>(this)->arrays().view(); }
 
@@ -80,12 +101,17 @@ struct PackedParticles {
     return fluid_before[end] != fluid_before[begin];
   }
 
-  void resize(std::size_t n) {
+  // For n particles, `fluid` of them fluid.
+  void resize(std::size_t n, std::size_t fluid_count) {
     for (int a = 0; a < 3; ++a) {
       position[a].resize(n);
       velocity[a].resize(n);
       viscous_velocity[a].resize(n);
+      fluid_position[a].resize(fluid_count);
+      fluid_velocity[a].resize(fluid_count);
     }
+    fluid_density.resize(fluid_count);
+    fluid_pressure.resize(fluid_count);
     for (auto* f : {&density, &pressure, &pressure_term, &volume, &fluid, &viscous_weight}) {
       f->resize(n);
     }

@@ -17,11 +17,16 @@
 namespace sluice {
 
 // Device bytes a particle takes in a run over a set of `layout`'s fields: the particle base's
-// (particle_device_run.hpp) and the packed copy, 15 floats (the count of fluid before each
-// particle is the base's).
+// (particle_device_run.hpp) and the packed copy, 15 floats, and 8 more for each fluid particle
+// (the fluid's own arrays), counted for every particle of an empty layout (the size estimate's
+// bound). The count of fluid before each particle is the base's.
 template <int D, class Backend>
 double wcsph_device_run_bytes_per_particle(const ParticleSet<D>& layout) {
-  return ParticleDeviceRun<D, Backend>::bytes_per_particle(layout) + 15 * 4;
+  std::size_t fluid = 0;
+  for (std::size_t i = 0; i < layout.size(); ++i) fluid += layout.is_fluid(i) ? 1 : 0;
+  const double fluid_share =
+      layout.size() > 0 ? static_cast<double>(fluid) / static_cast<double>(layout.size()) : 1.0;
+  return ParticleDeviceRun<D, Backend>::bytes_per_particle(layout) + 15 * 4 + 8 * 4 * fluid_share;
 }
 
 template <int D, class Kernel, class Backend>
@@ -48,6 +53,11 @@ class WcsphDeviceRunOn final : public ParticleDeviceServices<D, Backend, WcsphDe
                     &packed_fluid_, &packed_viscous_weight_})
       a->resize(n);
     base_.upload(host, point_acceleration, cell_start);
+    const std::size_t fluid = base_.fluid_count();
+    for (auto& a : fluid_position_) a.resize(fluid);
+    for (auto& a : fluid_velocity_) a.resize(fluid);
+    fluid_density_.resize(fluid);
+    fluid_pressure_.resize(fluid);
     find_fields();
     bytes_per_particle_ = wcsph_device_run_bytes_per_particle<D, Backend>(host);
     // The packed copy the host's last rates read, for the bodies' first loads.
@@ -117,6 +127,12 @@ class WcsphDeviceRunOn final : public ParticleDeviceServices<D, Backend, WcsphDe
     p.fluid = mutable_data(packed_fluid_);
     p.viscous_weight = mutable_data(packed_viscous_weight_);
     p.fluid_before = base_.fluid_before();
+    for (int a = 0; a < 3; ++a) {
+      p.fluid_position[a] = mutable_data(fluid_position_[a]);
+      p.fluid_velocity[a] = mutable_data(fluid_velocity_[a]);
+    }
+    p.fluid_density = mutable_data(fluid_density_);
+    p.fluid_pressure = mutable_data(fluid_pressure_);
     return p;
   }
   PackedParticles::View packed_view() const { return packed_arrays().view(); }
@@ -131,6 +147,7 @@ class WcsphDeviceRunOn final : public ParticleDeviceServices<D, Backend, WcsphDe
   Array<float> packed_position_[3], packed_velocity_[3], packed_viscous_velocity_[3];
   Array<float> packed_density_, packed_pressure_, packed_pressure_term_, packed_volume_,
       packed_fluid_, packed_viscous_weight_;
+  Array<float> fluid_position_[3], fluid_velocity_[3], fluid_density_, fluid_pressure_;
 };
 
 }  // namespace sluice

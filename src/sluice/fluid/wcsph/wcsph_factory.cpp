@@ -36,7 +36,7 @@ ModelEntry wcsph_entry() {
   ModelEntry entry;
   entry.make = make_wcsph<D>;
   entry.size.bytes_per_element = 500;  // measured: docs/output.md
-  entry.size.gpu_bytes_per_element = wcsph_device_bytes_per_particle;
+  entry.size.device_bytes_per_element = wcsph_device_bytes_per_particle;
   entry.devices = {"cpu", "gpu", "emulated"};
   return entry;
 }

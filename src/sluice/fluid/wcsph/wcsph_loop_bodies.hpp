@@ -91,7 +91,8 @@ struct WcsphKick {
   }
 };
 
-// Copies particle i into the single-precision arrays the pair loops read (2D: y = 0).
+// Copies particle i into the single-precision arrays the pair loops read (2D: y = 0), and a
+// fluid particle into the fluid's own arrays too (fluid_before must hold the counts).
 template <int D>
 struct WcsphPack {
   WcsphFields<D> f;
@@ -112,6 +113,15 @@ struct WcsphPack {
     packed.density[i] = static_cast<float>(f.density[i]);
     packed.pressure[i] = static_cast<float>(f.pressure[i]);
     packed.fluid[i] = fluid ? 1.0f : 0.0f;
+    if (fluid) {
+      const std::uint32_t k = packed.fluid_before[i];
+      for (int a3 = 0; a3 < 3; ++a3) {
+        packed.fluid_position[a3][k] = packed.position[a3][i];
+        packed.fluid_velocity[a3][k] = packed.velocity[a3][i];
+      }
+      packed.fluid_density[k] = packed.density[i];
+      packed.fluid_pressure[k] = packed.pressure[i];
+    }
     packed.viscous_weight[i] = (fluid || no_slip) ? 1.0f : 0.0f;
     if (with_rates) {
       const Real inverse_rho = 1 / f.density[i];

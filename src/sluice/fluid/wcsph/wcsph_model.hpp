@@ -205,13 +205,14 @@ class WcsphModel final : public ParticleFluid<D> {
   // Copies what the pair loops read into the packed single-precision arrays.
   void pack(const ParticleState<D>& s, bool with_rates) {
     const auto& ps = s.particles;
-    packed_.resize(ps.size());
-    exec::Default::for_each(ps.size(),
-                            WcsphPack<D>{fields(s), packed_.arrays(), p_.no_slip, with_rates});
+    packed_.fluid_before.resize(ps.size() + 1);
     packed_.fluid_before[0] = 0;
     for (std::size_t j = 0; j < ps.size(); ++j) {
       packed_.fluid_before[j + 1] = packed_.fluid_before[j] + (ps.is_fluid(j) ? 1 : 0);
     }
+    packed_.resize(ps.size(), packed_.fluid_before.back());
+    exec::Default::for_each(ps.size(),
+                            WcsphPack<D>{fields(s), packed_.arrays(), p_.no_slip, with_rates});
   }
 
   // The walls' pressure, density and viscous velocity from the fluid around them, as the
