@@ -242,7 +242,7 @@ class PenaltySphDeviceRunOn final
     list_.resize(n);
     near_.resize(n);
     bytes_per_particle_ = ParticleDeviceRun<D, Backend>::bytes_per_particle(host) +
-                          sizeof(SolidStepResult<D>) + 4 * sizeof(std::uint32_t) +
+                          sizeof(SolidStepResult<D>) + 5 * sizeof(std::uint32_t) +
                           (2 * D + 2) * sizeof(Real) + sizeof(std::int32_t) +
                           (D * sizeof(Real) + 2 * sizeof(std::uint32_t));
   }
