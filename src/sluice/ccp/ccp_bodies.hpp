@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -19,6 +20,36 @@ using Mat3 = Eigen::Matrix3d;
 
 // Locks: bits 0-2 translation along x, y, z; bits 3-5 rotation about x, y, z (world axes).
 inline constexpr std::uint8_t kLockPlanar = 0b101'010;  // a 2D case in the x-z plane
+
+// What M^-1 reads of the bodies (CcpBodies below), over plain arrays, for loop bodies that run
+// on the host's threads or a device's.
+struct CcpBodiesView {
+  const Real* inverse_mass = nullptr;
+  const Mat3* inverse_inertia = nullptr;  // the first tensor_count bodies'
+  std::size_t tensor_count = 0;
+  const Real* inverse_inertia_scalar = nullptr;
+  const std::uint8_t* locks = nullptr;
+
+  // The change of body b's velocities from an impulse p and an angular impulse l about its
+  // centre: M^-1 (p, l), zero along its locked degrees of freedom.
+  SLUICE_HOST_DEVICE void velocity_change(std::size_t b, const Vec3& p, const Vec3& l, Vec3& dv,
+                                          Vec3& dw) const {
+    dv = inverse_mass[b] * p;
+    dw = b < tensor_count ? Vec3(inverse_inertia[b] * l) : Vec3(inverse_inertia_scalar[b] * l);
+    const std::uint8_t bits = locks[b];
+    if (bits == 0) return;
+    // By multiplication, not per component: writing single components of a vector that is
+    // then read whole stalls the processor's store forwarding (measured: a third of the
+    // granular model's time).
+    dv = dv.cwiseProduct(free_axes(bits & 7));
+    dw = dw.cwiseProduct(free_axes(bits >> 3));
+  }
+
+  // 1 along the axes the three bits leave free, 0 along the locked ones.
+  SLUICE_HOST_DEVICE static Vec3 free_axes(unsigned bits) {
+    return Vec3(bits & 1 ? 0.0 : 1.0, bits & 2 ? 0.0 : 1.0, bits & 4 ? 0.0 : 1.0);
+  }
+};
 
 struct CcpBodies {
   std::vector<Vec3> velocity, angular_velocity;
@@ -53,24 +84,13 @@ struct CcpBodies {
     return push(v, w, inverse_m, inverse_i, lock_bits);
   }
 
-  // The change of body b's velocities from an impulse p and an angular impulse l about its
-  // centre: M^-1 (p, l), zero along its locked degrees of freedom.
-  void velocity_change(std::size_t b, const Vec3& p, const Vec3& l, Vec3& dv, Vec3& dw) const {
-    dv = inverse_mass[b] * p;
-    dw = b < inverse_inertia.size() ? Vec3(inverse_inertia[b] * l)
-                                    : Vec3(inverse_inertia_scalar[b] * l);
-    const std::uint8_t bits = locks[b];
-    if (bits == 0) return;
-    // By multiplication, not per component: writing single components of a vector that is
-    // then read whole stalls the processor's store forwarding (measured: a third of the
-    // granular model's time).
-    dv = dv.cwiseProduct(free_axes(bits & 7));
-    dw = dw.cwiseProduct(free_axes(bits >> 3));
+  CcpBodiesView view() const {
+    return {inverse_mass.data(), inverse_inertia.data(), inverse_inertia.size(),
+            inverse_inertia_scalar.data(), locks.data()};
   }
-
-  // 1 along the axes the three bits leave free, 0 along the locked ones.
-  static Vec3 free_axes(unsigned bits) {
-    return Vec3(bits & 1 ? 0.0 : 1.0, bits & 2 ? 0.0 : 1.0, bits & 4 ? 0.0 : 1.0);
+  // CcpBodiesView::velocity_change.
+  void velocity_change(std::size_t b, const Vec3& p, const Vec3& l, Vec3& dv, Vec3& dw) const {
+    view().velocity_change(b, p, l, dv, dw);
   }
 
  private:

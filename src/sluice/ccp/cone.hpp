@@ -8,12 +8,13 @@
 #include <cmath>
 
 #include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
 // Projects (n, u, v) onto the cone of friction mu and cohesion c, in place: the nearest point
 // of the cone (Euclidean).
-inline void project_on_cone(Real& n, Real& u, Real& v, Real mu, Real c) {
+SLUICE_HOST_DEVICE inline void project_on_cone(Real& n, Real& u, Real& v, Real mu, Real c) {
   Real shifted = n + c;
   if (mu <= 0) {
     n = std::max<Real>(shifted, 0) - c;

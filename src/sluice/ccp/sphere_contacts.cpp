@@ -84,118 +84,32 @@ void SphereContacts::finish() {
 }
 
 void SphereContacts::row_velocities(const BodyVelocities& u, std::span<Real> out) const {
-  const std::size_t k = rows_per_contact();
-  exec::Default::for_each_light(contacts_.size(), [&](std::size_t c) {
-    const Contact& contact = contacts_[c];
-    const Vec3& n = contact.normal;
-    Vec3 va = Vec3::Zero(), wa = Vec3::Zero();
-    if (contact.a != kWorld) {
-      va = u.linear[contact.a];
-      wa = u.angular[contact.a];
-    }
-    const Vec3& vb = u.linear[contact.b];
-    out[c * k] = n.dot(vb - va) - contact.target;
-    if (k == 1) return;
-    // The contact point's velocity on each side: v + w x (arm), arm_a = r_a n, arm_b = -r_b n.
-    const Vec3 slip =
-        vb - contact.radius_b * u.angular[contact.b].cross(n) - va - contact.radius_a * wa.cross(n);
-    const Vec3& t1 = tangents_[2 * c];
-    const Vec3& t2 = tangents_[2 * c + 1];
-    out[c * k + 1] = t1.dot(slip);
-    out[c * k + 2] = t2.dot(slip);
-    if (k == 3) return;
-    const Vec3 turn = u.angular[contact.b] - wa;
-    out[c * k + 3] = t1.dot(turn);
-    out[c * k + 4] = t2.dot(turn);
-    out[c * k + 5] = n.dot(turn);
-  });
+  exec::Default::for_each_light(
+      contacts_.size(), SphereRowVelocities{rows(), u.linear.data(), u.angular.data(), out.data()});
 }
 
 void SphereContacts::apply_impulses(const CcpBodies& bodies, std::span<const Real> gamma,
                                     BodyVelocities& u) const {
-  const std::size_t k = rows_per_contact();
-  if (k == 1) {  // frictionless: the impulses along the normals alone
-    exec::Default::for_each_light(count_, [&](std::size_t s) {
-      Real px = 0, py = 0, pz = 0;
-      for (std::uint32_t e = list_offsets_[s]; e < list_offsets_[s + 1]; ++e) {
-        const Entry& entry = list_[e];
-        const Real g = gamma[entry.contact_side / 2];
-        px += g * entry.push[0];
-        py += g * entry.push[1];
-        pz += g * entry.push[2];
-      }
-      Vec3 dv, dw;
-      bodies.velocity_change(first_ + s, Vec3(px, py, pz), Vec3::Zero(), dv, dw);
-      u.linear[first_ + s] += dv;
-    });
+  if (rows_per_contact() == 1) {
+    exec::Default::for_each_light(
+        count_, SphereNormalImpulses{list_offsets_.data(), list_.data(), gamma.data(), first_,
+                                     bodies.view(), u.linear.data()});
     return;
   }
-  exec::Default::for_each_light(count_, [&](std::size_t s) {
-    Vec3 p = Vec3::Zero(), l = Vec3::Zero();
-    for (std::uint32_t e = list_offsets_[s]; e < list_offsets_[s + 1]; ++e) {
-      const std::size_t c = list_[e].contact_side / 2;
-      const bool is_b = list_[e].contact_side & 1;
-      const Contact& contact = contacts_[c];
-      const Vec3& n = contact.normal;
-      Vec3 impulse = gamma[c * k] * n;  // on b; minus it on a
-      if (k >= 3) {
-        const Vec3& t1 = tangents_[2 * c];
-        const Vec3& t2 = tangents_[2 * c + 1];
-        const Vec3 tangential = gamma[c * k + 1] * t1 + gamma[c * k + 2] * t2;
-        impulse += tangential;
-        // arm x impulse: b's arm is -r_b n, a's is r_a n (and a takes minus the impulse).
-        l += is_b ? Vec3(-contact.radius_b * n.cross(tangential))
-                  : Vec3(-contact.radius_a * n.cross(tangential));
-        if (k == 6) {
-          const Vec3 torque = gamma[c * k + 3] * t1 + gamma[c * k + 4] * t2 + gamma[c * k + 5] * n;
-          l += is_b ? torque : Vec3(-torque);
-        }
-      }
-      p += is_b ? impulse : Vec3(-impulse);
-    }
-    Vec3 dv, dw;
-    bodies.velocity_change(first_ + s, p, l, dv, dw);
-    u.linear[first_ + s] += dv;
-    u.angular[first_ + s] += dw;
-  });
+  exec::Default::for_each_light(
+      count_, SphereImpulses{rows(), list_offsets_.data(), list_.data(), gamma.data(), first_,
+                             bodies.view(), u.linear.data(), u.angular.data()});
 }
 
 void SphereContacts::project(std::span<Real> gamma) const {
-  const std::size_t k = rows_per_contact();
-  exec::Default::for_each_light(contacts_.size(), [&](std::size_t c) {
-    if (k == 1) {
-      gamma[c] = std::max(gamma[c] + cohesion_, Real(0)) - cohesion_;
-      return;
-    }
-    project_on_cone(gamma[c * k], gamma[c * k + 1], gamma[c * k + 2], friction_, cohesion_);
-    if (k == 3) return;
-    // Rolling and spinning torques within mu_r r n of the normal impulse just projected.
-    const Contact& contact = contacts_[c];
-    const Real r = contact.radius_a > 0
-                       ? contact.radius_a * contact.radius_b / (contact.radius_a + contact.radius_b)
-                       : contact.radius_b;
-    const Real limit = rolling_friction_ * r * std::max<Real>(gamma[c * k] + cohesion_, 0);
-    const Real rolling = std::hypot(gamma[c * k + 3], gamma[c * k + 4]);
-    if (rolling > limit) {
-      gamma[c * k + 3] *= limit / rolling;
-      gamma[c * k + 4] *= limit / rolling;
-    }
-    gamma[c * k + 5] = std::clamp(gamma[c * k + 5], -limit, limit);
-  });
+  exec::Default::for_each_light(
+      contacts_.size(),
+      SphereProjection{rows(), friction_, cohesion_, rolling_friction_, gamma.data()});
 }
 
 void SphereContacts::diagonal(const CcpBodies& bodies, std::span<Real> out) const {
-  const std::size_t k = rows_per_contact();
-  exec::Default::for_each_light(contacts_.size(), [&](std::size_t c) {
-    const Contact& contact = contacts_[c];
-    const Real d =
-        (contact.a != kWorld ? bodies.inverse_mass[contact.a] : 0) + bodies.inverse_mass[contact.b];
-    for (std::size_t r = 0; r < std::min<std::size_t>(k, 3); ++r) out[c * k + r] = d;
-    // The torques' rows turn the spheres only.
-    const Real turn = (contact.a != kWorld ? bodies.inverse_inertia_scalar[contact.a] : 0) +
-                      bodies.inverse_inertia_scalar[contact.b];
-    for (std::size_t r = 3; r < k; ++r) out[c * k + r] = turn;
-  });
+  exec::Default::for_each_light(contacts_.size(),
+                                SphereDiagonal{rows(), bodies.view(), out.data()});
 }
 
 void SphereContacts::warm_start(std::span<Real> gamma) const {

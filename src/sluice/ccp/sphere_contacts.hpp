@@ -16,28 +16,22 @@
 #include <vector>
 
 #include "sluice/ccp/constraint_group.hpp"
+#include "sluice/ccp/sphere_contact_rows.hpp"
 #include "sluice/core/state_archive.hpp"
 
 namespace sluice {
 
+inline void archive_state(StateArchive& a, SphereContact& c) {
+  a(c.a, c.b, c.owner, c.partner, c.normal, c.radius_a, c.radius_b, c.target);
+}
+
 class SphereContacts final : public ConstraintGroup {
  public:
-  static constexpr std::uint32_t kWorld = 0xFFFFFFFF;
+  static constexpr std::uint32_t kWorld = kSphereWorld;
   // The partner code of a contact with wall w.
   static constexpr std::uint32_t wall_code(std::uint32_t w) { return 0xFFFF0000u + w; }
 
-  struct Contact {
-    std::uint32_t a = kWorld, b = 0;  // problem bodies; a may be kWorld (a wall)
-    std::uint32_t owner = 0;          // identity it is kept under: the smaller sphere's
-    std::uint32_t partner = 0;        // the other sphere's identity, or a wall's code
-    Vec3 normal = Vec3::UnitZ();      // from a into b
-    Real radius_a = 0, radius_b = 0;  // from each centre to the contact point, along n
-    Real target = 0;                  // the least normal velocity [m/s]
-  };
-  friend void archive_state(StateArchive& a, Contact& c) {
-    a(c.a, c.b, c.owner, c.partner, c.normal, c.radius_a, c.radius_b, c.target);
-  }
-
+  using Contact = SphereContact;
   // Starts a step: the spheres are bodies [first, first + count) of the problem, each known by
   // an identity below `identities`; friction mu, cohesion c [N s] and rolling friction mu_r
   // (needs mu > 0) for every contact.
@@ -83,13 +77,9 @@ class SphereContacts final : public ConstraintGroup {
   Real friction_ = 0, cohesion_ = 0, rolling_friction_ = 0;
   std::vector<Contact> contacts_;
   std::vector<Real> impulse_;
-  // Each sphere's contacts: 2 c + side (side 0: it is a; 1: it is b), and the direction its
-  // normal impulse pushes it (minus the normal for a), in single precision: the gather of the
-  // frictionless case reads nothing else (a sixth of a contact's record).
-  struct Entry {
-    float push[3];
-    std::uint32_t contact_side;
-  };
+  // Each sphere's contacts (SphereContactEntry), from list_offsets_[s].
+  using Entry = SphereContactEntry;
+  SphereRows rows() const { return {contacts_.data(), tangents_.data(), rows_per_contact()}; }
   std::vector<std::uint32_t> list_offsets_;
   std::vector<Entry> list_;
   std::vector<Vec3> tangents_;  // with friction: contact c's two, at 2 c and 2 c + 1
