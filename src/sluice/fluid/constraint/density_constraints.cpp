@@ -39,19 +39,8 @@ void DensityConstraints::append(const Block& block) {
 }
 
 void DensityConstraints::row_velocities(const BodyVelocities& u, std::span<Real> out) const {
-  exec::Default::for_each(size(), [&](std::size_t r) {
-    Real v = 0;
-    if (r < fluid_rows_) v -= sigma_[r].dot(u.linear[first_ + r]);
-    for (std::size_t k = offsets_[r]; k < offsets_[r + 1]; ++k) {
-      const Entry& e = entries_[k];
-      if (e.row < fluid_rows_) v += e.q.dot(u.linear[first_ + e.row]);
-    }
-    for (std::size_t k = body_offsets_[r]; k < body_offsets_[r + 1]; ++k) {
-      const BodyEntry& e = body_entries_[k];
-      v += e.linear.dot(u.linear[e.body]) + e.angular.dot(u.angular[e.body]);
-    }
-    out[r] = v - target_[r];
-  });
+  exec::Default::for_each(size(), DensityRowVelocities{rows(), u.linear.data(), u.angular.data(),
+                                                       target_.data(), out.data()});
 }
 
 void DensityConstraints::add_compliance(std::span<const Real> gamma, std::span<Real> out) const {
@@ -61,13 +50,7 @@ void DensityConstraints::add_compliance(std::span<const Real> gamma, std::span<R
 
 void DensityConstraints::apply_impulses(const CcpBodies& bodies, std::span<const Real> gamma,
                                         BodyVelocities& u) const {
-  // Fluid particle j: its own row's -sigma_j and, from each neighbour row k, -q_jk (= q_kj).
-  exec::Default::for_each(fluid_rows_, [&](std::size_t j) {
-    Vec3 p = -gamma[j] * sigma_[j];
-    for (std::size_t k = offsets_[j]; k < offsets_[j + 1]; ++k)
-      p -= gamma[entries_[k].row] * entries_[k].q;
-    u.linear[first_ + j] += inverse_mass_ * p;
-  });
+  exec::Default::for_each(fluid_rows_, DensityFluidImpulses{rows(), gamma.data(), u.linear.data()});
   if (body_entries_.empty()) return;
   std::vector<Vec3> impulse(first_, Vec3::Zero()), moment(first_, Vec3::Zero());
   for (const BodyEntry& e : body_entries_) {
@@ -90,20 +73,8 @@ void DensityConstraints::project(std::span<Real> gamma) const {
 }
 
 void DensityConstraints::diagonal(const CcpBodies& bodies, std::span<Real> out) const {
-  exec::Default::for_each(size(), [&](std::size_t r) {
-    Real d = r < fluid_rows_ ? sigma_[r].squaredNorm() : 0;
-    for (std::size_t k = offsets_[r]; k < offsets_[r + 1]; ++k) {
-      if (entries_[k].row < fluid_rows_) d += entries_[k].q.squaredNorm();
-    }
-    d *= inverse_mass_;
-    for (std::size_t k = body_offsets_[r]; k < body_offsets_[r + 1]; ++k) {
-      const BodyEntry& e = body_entries_[k];
-      Vec3 dv, dw;
-      bodies.velocity_change(e.body, e.linear, e.angular, dv, dw);
-      d += e.linear.dot(dv) + e.angular.dot(dw);
-    }
-    out[r] = d + compliance_[r];
-  });
+  exec::Default::for_each(size(),
+                          DensityDiagonal{rows(), bodies.view(), compliance_.data(), out.data()});
 }
 
 void DensityConstraints::warm_start(std::span<Real> gamma) const {

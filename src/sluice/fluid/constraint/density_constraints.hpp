@@ -20,22 +20,14 @@
 #include <vector>
 
 #include "sluice/ccp/constraint_group.hpp"
+#include "sluice/fluid/constraint/density_rows.hpp"
 
 namespace sluice {
 
 class DensityConstraints final : public ConstraintGroup {
  public:
-  // A neighbour k of a row: its row (fluid rows: its problem body is first + row), and q_rk.
-  struct Entry {
-    std::uint32_t row;
-    Vec3 q;
-  };
-  // A row's Jacobian on a rigid body of the problem (its velocity and angular velocity).
-  struct BodyEntry {
-    std::uint32_t row;
-    std::uint32_t body;
-    Vec3 linear, angular;
-  };
+  using Entry = DensityEntry;
+  using BodyEntry = DensityBodyEntry;
 
   // Empties the rows, for fluid rows acting on bodies (placed by place()) each of inverse mass
   // `inverse_mass`.
@@ -87,6 +79,11 @@ class DensityConstraints final : public ConstraintGroup {
   void store(std::span<const Real> gamma) override;
 
  private:
+  DensityRows rows() const {
+    return {first_,          fluid_rows_,          inverse_mass_,        offsets_.data(),
+            entries_.data(), body_offsets_.data(), body_entries_.data(), sigma_.data()};
+  }
+
   std::size_t first_ = 0, fluid_rows_ = 0;
   Real inverse_mass_ = 0;
   bool unilateral_ = true;
