@@ -13,16 +13,13 @@
 #include <vector>
 
 #include "sluice/ccp/constraint_group.hpp"
+#include "sluice/fluid/constraint/viscosity_rows.hpp"
 
 namespace sluice {
 
 class ViscosityConstraints final : public ConstraintGroup {
  public:
-  // A fluid neighbour j of particle i: forward = w_ij (row i's weight of j), backward = w_ji.
-  struct Entry {
-    std::uint32_t particle;
-    Real forward, backward;
-  };
+  using Entry = ViscosityEntry;
 
   // Rows for `particles` fluid particles (bodies of the problem placed by place(), each of
   // inverse mass `inverse_mass`) along the world axes in `axes` (2D: x and z).
@@ -51,8 +48,12 @@ class ViscosityConstraints final : public ConstraintGroup {
   void store(std::span<const Real> gamma) override;
 
  private:
-  template <std::size_t N>
-  void apply_impulses_along(std::span<const Real> gamma, BodyVelocities& u) const;
+  ViscosityRows rows() const {
+    ViscosityRows r{first_,          inverse_mass_, compliance_, offsets_.data(),
+                    entries_.data(), {0, 0, 0},     axes_.size()};
+    for (std::size_t a = 0; a < axes_.size(); ++a) r.axes[a] = axes_[a];
+    return r;
+  }
 
   std::size_t first_ = 0, particles_ = 0;
   Real inverse_mass_ = 0, compliance_ = 0;
