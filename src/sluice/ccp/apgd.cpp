@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "sluice/ccp/apgd_steps.hpp"
 #include "sluice/ccp/ccp_solver.hpp"
 #include "sluice/ccp/ccp_vectors.hpp"
 
@@ -29,29 +30,22 @@ CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVeloc
   problem.diagonal(diag);
   const Real alpha = residual_alpha(diag);
   // W: the diagonal, where it is positive.
-  exec::Default::for_each_light(n, [&](std::size_t i) {
-    inverse[i] = diag[i] > 0 ? 1 / diag[i] : 1;
-    if (!(diag[i] > 0)) diag[i] = 1;
-  });
+  exec::Default::for_each_light(n, apgd::InverseDiagonal{diag.data(), inverse.data()});
   // r = the gradient at gamma = 0; N x = gradient(x) - r.
   std::vector<Real> zero(n, 0);
   problem.gradient(zero, r, velocities);
   // f(x) = 1/2 x^T (N x) + r^T x = 1/2 x^T (g(x) + r).
-  auto objective = [&](std::span<const Real> x, std::span<const Real> g) {
-    return 0.5 * exec::Default::sum_of(n, [&](std::size_t i) { return x[i] * (g[i] + r[i]); });
+  auto objective = [&](const std::vector<Real>& x, const std::vector<Real>& g) {
+    return 0.5 * exec::Default::sum_of(n, apgd::ObjectiveTerm{x.data(), g.data(), r.data()});
   };
   // The Lipschitz constant of W^-1/2 N W^-1/2, estimated along W^-1/2 1 (a lower bound of
   // the largest eigenvalue; the backtracking raises it where it falls short).
   std::vector<Real> probe(n);
-  exec::Default::for_each_light(n, [&](std::size_t i) { probe[i] = std::sqrt(inverse[i]); });
+  exec::Default::for_each_light(n, apgd::SquareRoot{inverse.data(), probe.data()});
   problem.gradient(probe, g_new, velocities);
-  Real lipschitz = std::sqrt(exec::Default::sum_of(n,
-                                                   [&](std::size_t i) {
-                                                     const Real v =
-                                                         (g_new[i] - r[i]) * std::sqrt(inverse[i]);
-                                                     return v * v;
-                                                   }) /
-                             Real(n));
+  Real lipschitz = std::sqrt(
+      exec::Default::sum_of(n, apgd::ScaledProductSquare{g_new.data(), r.data(), inverse.data()}) /
+      Real(n));
   if (!(lipschitz > 0)) lipschitz = 1;
 
   problem.warm_start(gamma);
@@ -66,14 +60,13 @@ CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVeloc
     for (;;) {
       const Real step = 1 / lipschitz;
       exec::Default::for_each_light(
-          n, [&](std::size_t i) { gamma_new[i] = y[i] - step * inverse[i] * g_y[i]; });
+          n, apgd::GradientStep{y.data(), inverse.data(), g_y.data(), step, gamma_new.data()});
       problem.project(gamma_new);
       problem.gradient(gamma_new, g_new, velocities);
       const Real f_new = objective(gamma_new, g_new);
-      const Real model = f_y + exec::Default::sum_of(n, [&](std::size_t i) {
-                           const Real d = gamma_new[i] - y[i];
-                           return g_y[i] * d + 0.5 * lipschitz * diag[i] * d * d;
-                         });
+      const Real model =
+          f_y + exec::Default::sum_of(n, apgd::ModelTerm{g_y.data(), gamma_new.data(), y.data(),
+                                                         diag.data(), lipschitz});
       // Round-off: a step that changes f by less than its last bits is accepted.
       if (f_new <= model + 1e-14 * std::abs(f_y) || lipschitz > 1e300) break;
       lipschitz *= 2;
@@ -88,13 +81,13 @@ CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVeloc
     if (residual < settings.tolerance) break;
     // An uphill step (the gradient at y against the step from gamma): restart the momentum.
     const Real uphill =
-        exec::Default::sum_of(n, [&](std::size_t i) { return g_y[i] * (gamma_new[i] - gamma[i]); });
+        exec::Default::sum_of(n, apgd::UphillTerm{g_y.data(), gamma_new.data(), gamma.data()});
     if (uphill > 0) {
       y = gamma_new;
       theta = 1;
     } else {
-      exec::Default::for_each_light(
-          n, [&](std::size_t i) { y[i] = gamma_new[i] + beta * (gamma_new[i] - gamma[i]); });
+      exec::Default::for_each_light(n,
+                                    apgd::Momentum{gamma_new.data(), gamma.data(), beta, y.data()});
       theta = theta_new;
     }
     gamma.swap(gamma_new);

@@ -1,0 +1,95 @@
+// APGD's vector steps (apgd.cpp) as loop bodies over plain arrays, each a function of one
+// unknown's index, so that the host's threads run them on the solver's vectors and a device run
+// on its copies: the diagonal metric, the Lipschitz probe, the objective's and the quadratic
+// model's terms, the projected step, the restart test and the momentum.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+#include "sluice/core/types.hpp"
+#include "sluice/exec/host_device.hpp"
+
+namespace sluice::apgd {
+
+// W^-1 from the diagonal W of N, where it is positive (1 elsewhere, and W set to 1 there).
+struct InverseDiagonal {
+  Real* diagonal;
+  Real* inverse;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    inverse[i] = diagonal[i] > 0 ? 1 / diagonal[i] : 1;
+    if (!(diagonal[i] > 0)) diagonal[i] = 1;
+  }
+};
+
+// The probe W^-1/2 1 of the Lipschitz estimate.
+struct SquareRoot {
+  const Real* in;
+  Real* out;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const { out[i] = std::sqrt(in[i]); }
+};
+
+// ((N x)_i W_ii^-1/2)^2, N x = g - r, for the Lipschitz estimate's norm.
+struct ScaledProductSquare {
+  const Real* g;
+  const Real* r;
+  const Real* inverse;
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
+    const Real v = (g[i] - r[i]) * std::sqrt(inverse[i]);
+    return v * v;
+  }
+};
+
+// x_i (g_i + r_i): f(x) = 1/2 x^T (N x) + r^T x = 1/2 sum of these.
+struct ObjectiveTerm {
+  const Real* x;
+  const Real* g;
+  const Real* r;
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const { return x[i] * (g[i] + r[i]); }
+};
+
+// out = y - step W^-1 g (to be projected).
+struct GradientStep {
+  const Real* y;
+  const Real* inverse;
+  const Real* g;
+  Real step;
+  Real* out;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    out[i] = y[i] - step * inverse[i] * g[i];
+  }
+};
+
+// g_y d + L W d^2 / 2, d = x - y: the quadratic model's terms beyond f(y).
+struct ModelTerm {
+  const Real* g_y;
+  const Real* x;
+  const Real* y;
+  const Real* diagonal;
+  Real lipschitz;
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
+    const Real d = x[i] - y[i];
+    return g_y[i] * d + 0.5 * lipschitz * diagonal[i] * d * d;
+  }
+};
+
+// g_y (x_new - x): positive sums mean the step went uphill.
+struct UphillTerm {
+  const Real* g_y;
+  const Real* x_new;
+  const Real* x;
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const { return g_y[i] * (x_new[i] - x[i]); }
+};
+
+// y = x_new + beta (x_new - x).
+struct Momentum {
+  const Real* x_new;
+  const Real* x;
+  Real beta;
+  Real* y;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    y[i] = x_new[i] + beta * (x_new[i] - x[i]);
+  }
+};
+
+}  // namespace sluice::apgd
