@@ -1,7 +1,8 @@
 // APGD's vector steps (apgd.cpp) as loop bodies over plain arrays, each a function of one
 // unknown's index, so that the host's threads run them on the solver's vectors and a device run
 // on its copies: the diagonal metric, the Lipschitz probe, the objective's and the quadratic
-// model's terms, the projected step, the restart test and the momentum.
+// model's terms, the projected step, the restart test and the momentum, and the residual's
+// (ccp_problem.cpp) trial point and gap.
 #pragma once
 
 #include <cmath>
@@ -89,6 +90,22 @@ struct Momentum {
   Real* y;
   SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
     y[i] = x_new[i] + beta * (x_new[i] - x[i]);
+  }
+};
+
+// The residual's trial point gamma - alpha g (to be projected), and then |gamma - P(...)|.
+struct ResidualTrial {
+  const Real* gamma;
+  const Real* g;
+  Real alpha;
+  Real* out;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const { out[i] = gamma[i] - alpha * g[i]; }
+};
+struct ResidualGap {
+  const Real* gamma;
+  const Real* projected;
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const {
+    return std::abs(gamma[i] - projected[i]);
   }
 };
 

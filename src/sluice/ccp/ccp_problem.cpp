@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "sluice/ccp/apgd_steps.hpp"
 #include "sluice/exec/policy.hpp"
 
 namespace sluice {
@@ -55,11 +56,9 @@ Real CcpProblem::residual(std::span<const Real> gamma, std::span<const Real> g, 
                           std::vector<Real>& scratch) const {
   scratch.resize(size_);
   exec::Default::for_each_light(size_,
-                                [&](std::size_t i) { scratch[i] = gamma[i] - alpha * g[i]; });
+                                apgd::ResidualTrial{gamma.data(), g.data(), alpha, scratch.data()});
   project(scratch);
-  return exec::Default::max_of(size_,
-                               [&](std::size_t i) { return std::abs(gamma[i] - scratch[i]); }) /
-         alpha;
+  return exec::Default::max_of(size_, apgd::ResidualGap{gamma.data(), scratch.data()}) / alpha;
 }
 
 }  // namespace sluice
