@@ -12,7 +12,6 @@ namespace sluice {
 
 template <class T, int N>
 struct BoundedList {
-  static constexpr int kCapacity = N;
   T items[N];
   int count = 0;
 

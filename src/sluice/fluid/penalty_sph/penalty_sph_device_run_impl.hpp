@@ -300,14 +300,15 @@ class PenaltySphDeviceRunOn final
     // the whole step (however fast either moves) drift at once.
     Backend::for_each(bodies_, penalty_device::BodyStart<D>{body_list_.data(), a.position,
                                                             a.body_point, body_start()});
-    Vec<D> lo, hi;
-    bounds(a.position, body_list_.data(), bodies_, lo, hi);
+    Vec<D> lo, hi;  // of the bodies' particles: where gather_moving(0) places them
+    moving_grid_ = place_solids(body_list_.data(), bodies_, fixed_count_, body_start(), 0,
+                                moving_cells_, &lo, &hi);
+    moving_count_ = bodies_;
     const Real body_speed = std::max<Real>(
         0, bodies_ > 0 ? Backend::max_of(
                              bodies_, penalty_device::ListedSpeed<D>{body_list_.data(), a.velocity},
                              base_.workspace())
                        : 0);
-    gather_moving(0);
     const PenaltyOutOfBodiesReach<D> out_of_reach{a.position, a.half_velocity, a.acceleration, lo,
                                                   hi,         body_speed,      support_,       dt};
     near_count_ =
@@ -433,35 +434,31 @@ class PenaltySphDeviceRunOn final
     return count;
   }
 
-  // The least and largest coordinates of x[list[n]] (of x[n] without a list), n < count.
-  void bounds(const Vec<D>* x, const std::uint32_t* list, std::size_t count, Vec<D>& lo,
-              Vec<D>& hi) {
-    const Vec<D>* points = x;
-    if (list) {
-      solid_x_.resize(count);
-      Backend::for_each(count,
-                        penalty_device::SolidStart<D>{list, x, nullptr, nullptr, solid_x_.data()});
-      points = solid_x_.data();
-    }
+  // The least and largest coordinates of x[n], n < count.
+  void bounds(const Vec<D>* x, std::size_t count, Vec<D>& lo, Vec<D>& hi) {
     for (int axis = 0; axis < D; ++axis) {
       hi[axis] =
-          Backend::max_of(count, penalty_device::Coordinate<D>{points, axis, 1}, base_.workspace());
-      lo[axis] = -Backend::max_of(count, penalty_device::Coordinate<D>{points, axis, -1},
-                                  base_.workspace());
+          Backend::max_of(count, penalty_device::Coordinate<D>{x, axis, 1}, base_.workspace());
+      lo[axis] =
+          -Backend::max_of(count, penalty_device::Coordinate<D>{x, axis, -1}, base_.workspace());
     }
   }
 
   // The listed solids from solid `offset` on, sorted by cell on a grid two supports wide over
-  // where they start (SolidParticles::sorted_grid); the grid, with its cells in `cells`.
+  // where they start (SolidParticles::sorted_grid); the grid, with its cells in `cells`, and
+  // into `lo` and `hi` where given the bounds of where they start.
   CellGridView<D> place_solids(const std::uint32_t* list, std::size_t count, std::size_t offset,
-                               Vec<D>* start, Real dt, Array<std::uint32_t>& cells) {
+                               Vec<D>* start, Real dt, Array<std::uint32_t>& cells,
+                               Vec<D>* bounds_lo = nullptr, Vec<D>* bounds_hi = nullptr) {
     if (count == 0) return {};
     const PenaltySphArrays<D> a = arrays();
     solid_x_.resize(count);
     Backend::for_each(count, penalty_device::SolidStart<D>{list, a.position, a.body_point, start,
                                                            solid_x_.data()});
     Vec<D> lo, hi;
-    bounds(solid_x_.data(), nullptr, count, lo, hi);
+    bounds(solid_x_.data(), count, lo, hi);
+    if (bounds_lo) *bounds_lo = lo;
+    if (bounds_hi) *bounds_hi = hi;
     std::size_t cell_count = 0;
     const CellGridView<D> grid = cell_grid_over<D>(lo, hi, 2 * support_, cell_count);
     solid_key_.resize(count);
