@@ -1,8 +1,5 @@
 #include "sluice/ccp/ccp_problem.hpp"
 
-#include <cmath>
-
-#include "sluice/ccp/apgd_steps.hpp"
 #include "sluice/exec/policy.hpp"
 
 namespace sluice {
@@ -50,15 +47,6 @@ void CcpProblem::warm_start(std::span<Real> gamma) const {
 void CcpProblem::store(std::span<const Real> gamma) {
   for (std::size_t k = 0; k < groups_.size(); ++k)
     groups_[k]->store(gamma.subspan(offsets_[k], groups_[k]->size()));
-}
-
-Real CcpProblem::residual(std::span<const Real> gamma, std::span<const Real> g, Real alpha,
-                          std::vector<Real>& scratch) const {
-  scratch.resize(size_);
-  exec::Default::for_each_light(size_,
-                                apgd::ResidualTrial{gamma.data(), g.data(), alpha, scratch.data()});
-  project(scratch);
-  return exec::Default::max_of(size_, apgd::ResidualGap{gamma.data(), scratch.data()}) / alpha;
 }
 
 }  // namespace sluice

@@ -25,6 +25,9 @@ class CcpProblem {
   void add(ConstraintGroup& group);
   void clear_groups();
   std::size_t size() const { return size_; }
+  // The groups in order, and each one's first unknown.
+  const std::vector<ConstraintGroup*>& groups() const { return groups_; }
+  const std::vector<std::size_t>& offsets() const { return offsets_; }
 
   // g = D^T u + E gamma - target for the velocities u = v* + M^-1 D gamma, which it also
   // returns (E: the compliance of regularised rows, zero for the others).
@@ -33,13 +36,6 @@ class CcpProblem {
   void diagonal(std::span<Real> out) const;
   void warm_start(std::span<Real> gamma) const;
   void store(std::span<const Real> gamma);
-
-  // The velocity-level residual of gamma with gradient g [m/s]: the largest component of
-  // (gamma - P(gamma - alpha g)) / alpha, which tends, as alpha -> 0, to each active row's
-  // velocity error and each inactive row's violation (0 for a row that separates). alpha is
-  // a thousandth of the smallest effective mass of a row (1 / the largest of `diagonal`).
-  Real residual(std::span<const Real> gamma, std::span<const Real> g, Real alpha,
-                std::vector<Real>& scratch) const;
 
  private:
   std::vector<ConstraintGroup*> groups_;

@@ -32,12 +32,6 @@ std::vector<std::string> ccp_solver_names();
 // unknown one); `velocities` receives the bodies' velocities after the impulses.
 CcpResult solve_ccp(CcpProblem& problem, const CcpSettings& settings, BodyVelocities& velocities);
 
-// The end of either solver: the best impulses found go to the groups, `velocities` receives
-// the bodies' velocities after them (`scratch` holds the gradient), and the result.
-CcpResult finish_ccp(CcpProblem& problem, const std::vector<Real>& best, Real residual,
-                     int iterations, const CcpSettings& settings, std::vector<Real>& scratch,
-                     BodyVelocities& velocities);
-
 CcpResult solve_apgd(CcpProblem& problem, const CcpSettings& settings, BodyVelocities& velocities);
 CcpResult solve_projected_jacobi(CcpProblem& problem, const CcpSettings& settings,
                                  BodyVelocities& velocities);

@@ -10,6 +10,7 @@
 
 #include "sluice/ccp/constraint_group.hpp"
 #include "sluice/ccp/constraint_row.hpp"
+#include "sluice/ccp/row_group_rows.hpp"
 
 namespace sluice {
 
@@ -42,6 +43,7 @@ class RowGroup final : public ConstraintGroup {
 
   const std::vector<ConstraintRow>& rows() const { return rows_; }
   std::vector<ConstraintRow>& rows() { return rows_; }
+  const std::vector<RowBlock>& blocks() const { return blocks_; }
 
   std::size_t size() const override { return rows_.size(); }
   void row_velocities(const BodyVelocities& u, std::span<Real> out) const override;
@@ -58,18 +60,8 @@ class RowGroup final : public ConstraintGroup {
   }
 
  private:
-  struct Block {
-    std::size_t first = 0;
-    bool cone = false;
-    Real friction = 0, cohesion = 0;
-    std::uint64_t key = 0;
-    Real slip_correction = 0;  // mu |u_t| added to the normal row's bias
-    void archive_state(StateArchive& a) {
-      a(first, cone, friction, cohesion, key, slip_correction);
-    }
-  };
   std::vector<ConstraintRow> rows_;
-  std::vector<Block> blocks_;
+  std::vector<RowBlock> blocks_;
 };
 
 }  // namespace sluice

@@ -59,6 +59,18 @@ class SphereContacts final : public ConstraintGroup {
   void warm_start(std::span<Real> gamma) const override;
   void store(std::span<const Real> gamma) override;
 
+  // The contacts as plain arrays (sphere_contact_rows.hpp), for a device's copy: the rows, each
+  // sphere's list of its contacts, and the settings of every contact.
+  SphereRows rows() const { return {contacts_.data(), tangents_.data(), rows_per_contact()}; }
+  std::size_t tangent_count() const { return tangents_.size(); }
+  const std::vector<std::uint32_t>& list_offsets() const { return list_offsets_; }
+  const std::vector<SphereContactEntry>& list() const { return list_; }
+  std::size_t first() const { return first_; }
+  std::size_t count() const { return count_; }
+  Real friction() const { return friction_; }
+  Real cohesion() const { return cohesion_; }
+  Real rolling_friction() const { return rolling_friction_; }
+
   // Checkpoints: the last step's contacts and impulses, which the next step's warm start
   // reads, with the settings that shape them.
   void archive_state(StateArchive& a) {
@@ -79,7 +91,6 @@ class SphereContacts final : public ConstraintGroup {
   std::vector<Real> impulse_;
   // Each sphere's contacts (SphereContactEntry), from list_offsets_[s].
   using Entry = SphereContactEntry;
-  SphereRows rows() const { return {contacts_.data(), tangents_.data(), rows_per_contact()}; }
   std::vector<std::uint32_t> list_offsets_;
   std::vector<Entry> list_;
   std::vector<Vec3> tangents_;  // with friction: contact c's two, at 2 c and 2 c + 1

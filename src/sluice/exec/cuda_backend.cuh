@@ -11,6 +11,9 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
+
+#include "sluice/exec/sum_block.hpp"
 
 namespace sluice::exec {
 
@@ -30,6 +33,18 @@ template <class Value>
 __global__ void evaluate_each(std::size_t n, Value value, double* out) {
   const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
   if (i < n) out[i] = value(i);
+}
+
+// Thread k sums value(i) over block k of kSumBlock indices, in index order.
+template <class Value>
+__global__ void sum_each_block(std::size_t n, std::size_t blocks, Value value, double* out) {
+  const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (k >= blocks) return;
+  const std::size_t begin = k * kSumBlock;
+  const std::size_t end = begin + kSumBlock < n ? begin + kSumBlock : n;
+  double sum = 0;
+  for (std::size_t i = begin; i < end; ++i) sum += value(i);
+  out[k] = sum;
 }
 
 struct CudaBackend {
@@ -126,6 +141,23 @@ struct CudaBackend {
     if (n == 0) return 0;
     return reduce(n, value, workspace, "cub::DeviceReduce::Sum",
                   [](auto&&... args) { return cub::DeviceReduce::Sum(args...); });
+  }
+
+  // In kSumBlock blocks, each in index order, and the blocks' sums in block order on the host:
+  // the additions the host's policy makes (exec/policy.hpp), for the complementarity solvers.
+  template <class Value>
+  static double block_sum_of(std::size_t n, const Value& value, Workspace& workspace) {
+    const std::size_t blocks = (n + kSumBlock - 1) / kSumBlock;
+    if (blocks == 0) return 0;
+    Array<double>& values = workspace.values;
+    if (values.size() < blocks) values.resize(blocks);
+    sum_each_block<<<CudaBackend::blocks(blocks), kBlock>>>(n, blocks, value, values.data());
+    cuda_check(cudaGetLastError(), "a block sum's launch");
+    std::vector<double> partial(blocks);
+    values.to_host(partial.data(), blocks);
+    double total = 0;
+    for (const double p : partial) total += p;
+    return total;
   }
 
   // Stable, by the keys' lowest `bits` bits (CUB's radix sort keeps equal keys in order).

@@ -42,9 +42,11 @@ struct HostBackend {
   // What a device keeps between its sorts, scans and reductions: the host needs nothing.
   struct Workspace {};
 
+  // On the calling thread below exec::kParallelFrom indices, where starting the threads costs
+  // more than the work (the complementarity solvers' dozen short loops an iteration).
   template <class Body>
   static void for_each(std::size_t n, const Body& body) {
-    Default::for_each(n, body);
+    Default::for_each_light(n, body);
   }
 
   template <class Value>
@@ -58,6 +60,13 @@ struct HostBackend {
     double sum = 0;
     for (std::size_t i = 0; i < n; ++i) sum += value(i);
     return sum;
+  }
+
+  // In exec::kSumBlock blocks, as the host's policy sums (exec/policy.hpp): the complementarity
+  // solvers' sums, which the host's solve takes that way.
+  template <class Value>
+  static double block_sum_of(std::size_t n, const Value& value, Workspace&) {
+    return Default::sum_of(n, value);
   }
 
   // Stable: particles keep their order within a cell, as the host's counting sort keeps it.

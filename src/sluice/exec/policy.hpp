@@ -10,11 +10,10 @@
 #include <limits>
 #include <vector>
 
+#include "sluice/exec/sum_block.hpp"
+
 namespace sluice::exec {
 
-// Sums are taken over fixed blocks of kSumBlock indices, each block in index order, and the
-// blocks' sums in block order: the same additions whatever the number of threads.
-inline constexpr std::size_t kSumBlock = 4096;
 // Loops shorter than this run on the calling thread: starting the threads costs more (a few
 // microseconds) than the work (the CCP solvers run a dozen short loops an iteration).
 inline constexpr long kParallelFrom = 4096;

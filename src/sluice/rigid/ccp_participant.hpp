@@ -3,7 +3,7 @@
 // contacts with each other, the walls and the bodies; or rows on the bodies alone).
 #pragma once
 
-#include "sluice/ccp/ccp_problem.hpp"
+#include "sluice/ccp/ccp_solver.hpp"
 
 namespace sluice {
 
@@ -14,6 +14,12 @@ class CcpParticipant {
   // velocities, indexed as the system's) and its groups, for a step of dt. The groups must
   // outlive the solve.
   virtual void add_to_problem(CcpProblem& /*problem*/, double /*dt*/) {}
+  // Solves the step's problem, where the participant's work runs (its device); on the host by
+  // default.
+  virtual CcpResult solve(CcpProblem& problem, const CcpSettings& settings,
+                          BodyVelocities& velocities) {
+    return solve_ccp(problem, settings, velocities);
+  }
   // After the solve: its bodies' velocities are in `velocities`, at the indices it gave them;
   // it moves them over dt.
   virtual void take_solution(const CcpProblem& /*problem*/, const BodyVelocities& /*velocities*/,

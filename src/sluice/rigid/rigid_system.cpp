@@ -71,11 +71,15 @@ void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* part
   problem_.add(joint_rows_);
   if (participant) participant->add_to_problem(problem_, h);
 
-  CcpResult result = solve_ccp(problem_, velocity_step_.solver, velocities_);
+  auto solve = [&] {
+    return participant ? participant->solve(problem_, velocity_step_.solver, velocities_)
+                       : solve_ccp(problem_, velocity_step_.solver, velocities_);
+  };
+  CcpResult result = solve();
   for (int k = 0; k < velocity_step_.slip_iterations; ++k) {
     if (contact_rows_.correct_slip(velocities_) <= velocity_step_.solver.tolerance) break;
     const int before = result.iterations;
-    result = solve_ccp(problem_, velocity_step_.solver, velocities_);
+    result = solve();
     result.iterations += before;
   }
   ++totals_.solves;

@@ -24,9 +24,11 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/constraint/constraint_parameters.hpp"
 #include "sluice/fluid/constraint/density_constraints.hpp"
+#include "sluice/fluid/constraint/device_constraint_groups.hpp"
 #include "sluice/fluid/constraint/viscosity_constraints.hpp"
 #include "sluice/fluid/flat_wall_share.hpp"
 #include "sluice/fluid/monolithic_case.hpp"
+#include "sluice/fluid/monolithic_solve.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
 
@@ -49,20 +51,21 @@ class ConstraintModel final : public ParticleFluid<D> {
         // V sum x^2 (-F(r)) over the lattice: 1 for an exact kernel gradient.
         gradient_moment_(volume_ * lattice_sum([this](Real r, Real x) {
                            return -x * x * kernel_.gradient_factor(r);
-                         })) {}
+                         })),
+        solve_(parameters.emulated_device, add_constraint_group_copiers<exec::HostBackend>) {}
 
   std::string describe() const override {
     return fmt::format(
         "constraint: wendland h = {:.4g} m ({} dx), {} density constraints, compliance {:.3g} "
         "1/Pa (bulk modulus {:.3g} Pa), relaxation {} steps, {}, {}, solve to {} m/s in at most "
-        "{} iterations",
+        "{} iterations{}",
         kernel_.h, p_.h_over_dx, p_.unilateral ? "unilateral" : "bilateral", p_.compliance,
         1 / p_.compliance, p_.relaxation,
         p_.viscosity > 0 ? fmt::format("viscosity constraints of {} m^2/s", p_.viscosity)
                          : "no viscosity constraints",
         p_.time_step > 0 ? fmt::format("fixed dt = {} s", p_.time_step)
                          : fmt::format("dt = {} dx / max speed", p_.cfl),
-        p_.tolerance, p_.max_iterations);
+        p_.tolerance, p_.max_iterations, p_.emulated_device ? ", " + solve_.where() : "");
   }
 
   void initialize() override {
@@ -136,6 +139,11 @@ class ConstraintModel final : public ParticleFluid<D> {
     }
   }
 
+  CcpResult solve(CcpProblem& problem, const CcpSettings& settings,
+                  BodyVelocities& velocities) override {
+    return solve_(problem, settings, velocities);
+  }
+
   void take_solution(const CcpProblem&, const BodyVelocities& u, double h) override {
     auto& ps = this->state().particles;
     const std::size_t first = first_;
@@ -175,9 +183,17 @@ class ConstraintModel final : public ParticleFluid<D> {
 
   std::vector<std::pair<std::string, double>> counters() const override {
     const double steps = std::max<double>(1, double(steps_));
-    return {{"largest_density_error", largest_error_},
-            {"rows_per_step", double(row_total_) / steps},
-            {"neighbours_per_row", double(entry_total_) / std::max<double>(1, double(row_total_))}};
+    std::vector<std::pair<std::string, double>> out{
+        {"largest_density_error", largest_error_},
+        {"rows_per_step", double(row_total_) / steps},
+        {"neighbours_per_row", double(entry_total_) / std::max<double>(1, double(row_total_))}};
+    // The device's copy of the problem, per particle of the set (walls and bodies' too).
+    if (solve_.on_device()) {
+      out.emplace_back("device_bytes_per_particle",
+                       double(solve_.largest_bytes()) /
+                           std::max<double>(1, double(this->state().particles.size())));
+    }
+    return out;
   }
 
   // The largest compression of a fluid particle, rho / rho_ref - 1, now and over the run.
@@ -416,6 +432,7 @@ class ConstraintModel final : public ParticleFluid<D> {
   Real max_speed_ = 0;
   Real density_error_ = 0, largest_error_ = 0;
   long steps_ = 0, row_total_ = 0, entry_total_ = 0;
+  MonolithicSolve solve_;
 };
 
 }  // namespace sluice

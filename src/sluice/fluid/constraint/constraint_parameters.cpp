@@ -26,6 +26,8 @@ ConstraintParameters read_constraint_parameters(const io::CaseConfig& config) {
   p.max_speed = model.optional_positive("max_speed", 0);
   p.max_iterations = static_cast<int>(model.optional_positive("max_iterations", p.max_iterations));
   p.tolerance = model.optional_positive("tolerance", p.tolerance);
+  p.emulated_device =
+      model.optional_choice("device", "cpu", "device", {"cpu", "emulated"}) == "emulated";
   model.finish();
   if (p.max_speed == 0) p.max_speed = free_fall_speed(config);
   if (!(p.max_speed > 0) && p.time_step == 0) {

@@ -24,6 +24,9 @@ struct ConstraintParameters {
   double max_speed = 0;      // the speed scale [m/s]; 0 = the free-fall speed sqrt(2 g H)
   int max_iterations = 100;  // of the one solve (fluid and bodies)
   double tolerance = 1e-3;   // of the one solve's residual [m/s]
+  // Where the complementarity solve runs: the host, or the emulated device's copy of the
+  // problem (ccp/device_ccp_problem.hpp), which gives the same answer to the bit.
+  bool emulated_device = false;
 };
 
 ConstraintParameters read_constraint_parameters(const io::CaseConfig& config);

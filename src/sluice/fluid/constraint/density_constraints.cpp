@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "sluice/ccp/ccp_steps.hpp"
 #include "sluice/exec/policy.hpp"
 
 namespace sluice {
@@ -44,32 +45,23 @@ void DensityConstraints::row_velocities(const BodyVelocities& u, std::span<Real>
 }
 
 void DensityConstraints::add_compliance(std::span<const Real> gamma, std::span<Real> out) const {
-  exec::Default::for_each_light(size(),
-                                [&](std::size_t r) { out[r] += compliance_[r] * gamma[r]; });
+  exec::Default::for_each_light(
+      size(), ccp_steps::AddCompliance{compliance_.data(), gamma.data(), out.data()});
 }
 
 void DensityConstraints::apply_impulses(const CcpBodies& bodies, std::span<const Real> gamma,
                                         BodyVelocities& u) const {
   exec::Default::for_each(fluid_rows_, DensityFluidImpulses{rows(), gamma.data(), u.linear.data()});
   if (body_entries_.empty()) return;
-  std::vector<Vec3> impulse(first_, Vec3::Zero()), moment(first_, Vec3::Zero());
-  for (const BodyEntry& e : body_entries_) {
-    impulse[e.body] += gamma[e.row] * e.linear;
-    moment[e.body] += gamma[e.row] * e.angular;
-  }
-  for (std::size_t b = 0; b < first_; ++b) {
-    if (impulse[b].isZero() && moment[b].isZero()) continue;
-    Vec3 dv, dw;
-    bodies.velocity_change(b, impulse[b], moment[b], dv, dw);
-    u.linear[b] += dv;
-    u.angular[b] += dw;
-  }
+  std::vector<Vec3> impulse(first_), moment(first_);
+  DensityBodyImpulses{body_entries_.data(), body_entries_.size(), first_,
+                      bodies.view(),        gamma.data(),         impulse.data(),
+                      moment.data(),        u.linear.data(),      u.angular.data()}(0);
 }
 
 void DensityConstraints::project(std::span<Real> gamma) const {
   if (!unilateral_) return;
-  exec::Default::for_each_light(size(),
-                                [&](std::size_t r) { gamma[r] = std::max<Real>(gamma[r], 0); });
+  exec::Default::for_each_light(size(), ccp_steps::NotNegative{gamma.data()});
 }
 
 void DensityConstraints::diagonal(const CcpBodies& bodies, std::span<Real> out) const {

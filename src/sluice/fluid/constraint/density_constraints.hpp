@@ -78,12 +78,17 @@ class DensityConstraints final : public ConstraintGroup {
   void warm_start(std::span<Real> gamma) const override;
   void store(std::span<const Real> gamma) override;
 
- private:
+  // The rows as plain arrays (density_rows.hpp), for a device's copy; targets, compliance and
+  // sign as set for the step.
   DensityRows rows() const {
     return {first_,          fluid_rows_,          inverse_mass_,        offsets_.data(),
             entries_.data(), body_offsets_.data(), body_entries_.data(), sigma_.data()};
   }
+  const std::vector<Real>& target() const { return target_; }
+  const std::vector<Real>& compliance() const { return compliance_; }
+  bool unilateral() const { return unilateral_; }
 
+ private:
   std::size_t first_ = 0, fluid_rows_ = 0;
   Real inverse_mass_ = 0;
   bool unilateral_ = true;

@@ -73,6 +73,35 @@ struct DensityFluidImpulses {
   }
 };
 
+// The rows' impulses on the rigid bodies [0, count) from their body entries, summed per body in
+// entry order into impulse and moment (count each), then taken through M^-1 (run as one index:
+// a few bodies, entries from many rows).
+struct DensityBodyImpulses {
+  const DensityBodyEntry* entries;
+  std::size_t entry_count, count;
+  CcpBodiesView bodies;
+  const Real* gamma;
+  Vec3* impulse;
+  Vec3* moment;
+  Vec3* linear;
+  Vec3* angular;
+  SLUICE_HOST_DEVICE void operator()(std::size_t) const {
+    for (std::size_t b = 0; b < count; ++b) impulse[b] = moment[b] = Vec3::Zero();
+    for (std::size_t k = 0; k < entry_count; ++k) {
+      const DensityBodyEntry& e = entries[k];
+      impulse[e.body] += gamma[e.row] * e.linear;
+      moment[e.body] += gamma[e.row] * e.angular;
+    }
+    for (std::size_t b = 0; b < count; ++b) {
+      if (impulse[b].isZero() && moment[b].isZero()) continue;
+      Vec3 dv, dw;
+      bodies.velocity_change(b, impulse[b], moment[b], dv, dw);
+      linear[b] += dv;
+      angular[b] += dw;
+    }
+  }
+};
+
 // Row r's inverse effective mass plus its compliance: J_r M^-1 J_r^T + Sigma_r.
 struct DensityDiagonal {
   DensityRows rows;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "sluice/ccp/ccp_steps.hpp"
 #include "sluice/exec/policy.hpp"
 
 namespace sluice {
@@ -35,7 +36,8 @@ void ViscosityConstraints::row_velocities(const BodyVelocities& u, std::span<Rea
 }
 
 void ViscosityConstraints::add_compliance(std::span<const Real> gamma, std::span<Real> out) const {
-  exec::Default::for_each_light(size(), [&](std::size_t r) { out[r] += compliance_ * gamma[r]; });
+  exec::Default::for_each_light(
+      size(), ccp_steps::AddUniformCompliance{compliance_, gamma.data(), out.data()});
 }
 
 void ViscosityConstraints::apply_impulses(const CcpBodies&, std::span<const Real> gamma,

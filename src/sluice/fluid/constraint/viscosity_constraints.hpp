@@ -47,7 +47,8 @@ class ViscosityConstraints final : public ConstraintGroup {
   void warm_start(std::span<Real> gamma) const override;
   void store(std::span<const Real> gamma) override;
 
- private:
+  // The rows as plain arrays (viscosity_rows.hpp), for a device's copy.
+  std::size_t entry_count() const { return entries_.size(); }
   ViscosityRows rows() const {
     ViscosityRows r{first_,          inverse_mass_, compliance_, offsets_.data(),
                     entries_.data(), {0, 0, 0},     axes_.size()};
@@ -55,6 +56,7 @@ class ViscosityConstraints final : public ConstraintGroup {
     return r;
   }
 
+ private:
   std::size_t first_ = 0, particles_ = 0;
   Real inverse_mass_ = 0, compliance_ = 0;
   std::vector<int> axes_;

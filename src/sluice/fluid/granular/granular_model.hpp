@@ -27,6 +27,7 @@
 #include "sluice/fluid/granular/granular_parameters.hpp"
 #include "sluice/fluid/granular/sphere_walls.hpp"
 #include "sluice/fluid/monolithic_case.hpp"
+#include "sluice/fluid/monolithic_solve.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 
 namespace sluice {
@@ -45,15 +46,17 @@ class GranularModel final : public ParticleFluid<D> {
         walls_(config.walls, config.dimension),
         mass_(config.fluid.density * std::pow(config.spacing, D)),
         // A sphere's inertia over m r^2 (2D: a disc's, per unit depth as its mass).
-        inertia_factor_(D == 3 ? 0.4 : 0.5) {}
+        inertia_factor_(D == 3 ? 0.4 : 0.5),
+        solve_(parameters.emulated_device) {}
 
   std::string describe() const override {
     return fmt::format(
         "granular: spheres of r = {:.4g} m and {:.4g} kg ({} water per lattice cell), friction "
-        "{}, cohesion {} N, {}",
+        "{}, cohesion {} N, {}{}",
         p_.radius, mass_, D == 3 ? "the" : "the 2D", p_.friction, p_.cohesion,
         p_.time_step > 0 ? fmt::format("fixed dt = {} s", p_.time_step)
-                         : fmt::format("dt = {} r / max speed", p_.cfl));
+                         : fmt::format("dt = {} r / max speed", p_.cfl),
+        p_.emulated_device ? ", " + solve_.where() : "");
   }
 
   void initialize() override {
@@ -125,6 +128,11 @@ class GranularModel final : public ParticleFluid<D> {
     problem.add(body_rows_);
   }
 
+  CcpResult solve(CcpProblem& problem, const CcpSettings& settings,
+                  BodyVelocities& velocities) override {
+    return solve_(problem, settings, velocities);
+  }
+
   void take_solution(const CcpProblem&, const BodyVelocities& u, double h) override {
     auto& ps = this->state().particles;
     exec::Default::for_each(sphere_particle_.size(), [&](std::size_t s) {
@@ -146,8 +154,16 @@ class GranularModel final : public ParticleFluid<D> {
 
   std::vector<std::pair<std::string, double>> counters() const override {
     const double steps = std::max<double>(1, double(steps_));
-    return {{"sphere_contacts_per_step", double(sphere_contact_total_) / steps},
-            {"body_contacts_per_step", double(body_contact_total_) / steps}};
+    std::vector<std::pair<std::string, double>> out{
+        {"sphere_contacts_per_step", double(sphere_contact_total_) / steps},
+        {"body_contacts_per_step", double(body_contact_total_) / steps}};
+    // The device's copy of the problem, per particle of the set (walls and bodies' too).
+    if (solve_.on_device()) {
+      out.emplace_back("device_bytes_per_particle",
+                       double(solve_.largest_bytes()) /
+                           std::max<double>(1, double(this->state().particles.size())));
+    }
+    return out;
   }
 
   FluidEnergy energy() const override {
@@ -393,6 +409,7 @@ class GranularModel final : public ParticleFluid<D> {
   const BodyGeometry* bodies_;
   SphereWalls walls_;
   Real mass_, inertia_factor_;
+  MonolithicSolve solve_;
   FieldHandle<std::int32_t> id_;
   FieldHandle<Real> spin_[3], radius_field_;
   std::size_t spheres_ = 0, first_ = 0;

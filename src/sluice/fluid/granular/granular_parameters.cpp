@@ -47,6 +47,8 @@ GranularParameters read_granular_parameters(const io::CaseConfig& config) {
                fmt::format("must be at least twice cfl ({}), got {}", 2 * p.cfl, p.envelope));
   }
   p.max_speed = model.optional_positive("max_speed", 0);
+  p.emulated_device =
+      model.optional_choice("device", "cpu", "device", {"cpu", "emulated"}) == "emulated";
   model.finish();
   if (p.max_speed == 0) p.max_speed = free_fall_speed(config);
   if (!(p.max_speed > 0) && p.time_step == 0) {

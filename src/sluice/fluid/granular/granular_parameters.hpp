@@ -32,6 +32,9 @@ struct GranularParameters {
   double cfl = 0.1;        // of a radius a sphere may move in a step
   double envelope = 0.25;  // contacts are looked for up to this many radii apart
   double max_speed = 0;    // the speed scale [m/s]; 0 = the free-fall speed sqrt(2 g H)
+  // Where the complementarity solve runs: the host, or the emulated device's copy of the
+  // problem (ccp/device_ccp_problem.hpp), which gives the same answer to the bit.
+  bool emulated_device = false;
 };
 
 GranularParameters read_granular_parameters(const io::CaseConfig& config);

@@ -1,8 +1,9 @@
-// APGD's vector steps (apgd.cpp) as loop bodies over plain arrays, each a function of one
-// unknown's index, so that the host's threads run them on the solver's vectors and a device run
-// on its copies: the diagonal metric, the Lipschitz probe, the objective's and the quadratic
-// model's terms, the projected step, the restart test and the momentum, and the residual's
-// (ccp_problem.cpp) trial point and gap.
+// The complementarity solvers' vector steps (ccp_iterations.hpp) as loop bodies over plain
+// arrays, each a function of one unknown's index, so that the host's threads run them on the
+// solver's vectors and a device run on its copies: APGD's diagonal metric, Lipschitz probe,
+// objective and quadratic model terms, projected step, restart test and momentum; projected
+// Jacobi's step; the residual's trial point and gap; and the rows' compliance and sign
+// constraint that groups of compliant or unilateral rows share.
 #pragma once
 
 #include <cmath>
@@ -11,7 +12,7 @@
 #include "sluice/core/types.hpp"
 #include "sluice/exec/host_device.hpp"
 
-namespace sluice::apgd {
+namespace sluice::ccp_steps {
 
 // W^-1 from the diagonal W of N, where it is positive (1 elsewhere, and W set to 1 there).
 struct InverseDiagonal {
@@ -93,6 +94,51 @@ struct Momentum {
   }
 };
 
+// The vector's elements themselves (for their largest).
+struct Element {
+  const Real* values;
+  SLUICE_HOST_DEVICE double operator()(std::size_t i) const { return values[i]; }
+};
+
+// A vector of zeros.
+struct Zero {
+  Real* out;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const { out[i] = 0; }
+};
+
+// Projected Jacobi's step gamma -= omega g / W, where W is positive.
+struct JacobiStep {
+  const Real* g;
+  const Real* diagonal;
+  Real omega;
+  Real* gamma;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    if (diagonal[i] > 0) gamma[i] -= omega * g[i] / diagonal[i];
+  }
+};
+
+// out += E gamma for compliant rows: each its own compliance, or one for all.
+struct AddCompliance {
+  const Real* compliance;
+  const Real* gamma;
+  Real* out;
+  SLUICE_HOST_DEVICE void operator()(std::size_t r) const { out[r] += compliance[r] * gamma[r]; }
+};
+struct AddUniformCompliance {
+  Real compliance;
+  const Real* gamma;
+  Real* out;
+  SLUICE_HOST_DEVICE void operator()(std::size_t r) const { out[r] += compliance * gamma[r]; }
+};
+
+// Unilateral rows: gamma >= 0 (as std::max(gamma, 0) takes it).
+struct NotNegative {
+  Real* gamma;
+  SLUICE_HOST_DEVICE void operator()(std::size_t r) const {
+    gamma[r] = gamma[r] < 0 ? Real(0) : gamma[r];
+  }
+};
+
 // The residual's trial point gamma - alpha g (to be projected), and then |gamma - P(...)|.
 struct ResidualTrial {
   const Real* gamma;
@@ -109,4 +155,4 @@ struct ResidualGap {
   }
 };
 
-}  // namespace sluice::apgd
+}  // namespace sluice::ccp_steps
