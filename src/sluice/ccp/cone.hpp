@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

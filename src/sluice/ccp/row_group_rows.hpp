@@ -12,7 +12,7 @@
 #include "sluice/ccp/ccp_bodies.hpp"
 #include "sluice/ccp/cone.hpp"
 #include "sluice/ccp/constraint_row.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <cstdint>
 
+#include "sluice/core/host_device.hpp"
+
 namespace sluice {
 
 using Real = double;
@@ -26,7 +28,7 @@ inline constexpr int kUpAxis = D - 1;
 
 // Maps a D-dimensional vector into 3D space (2D: x-z plane at y = 0).
 template <int D>
-Vec3 to_3d(const Vec<D>& v) {
+SLUICE_HOST_DEVICE Vec3 to_3d(const Vec<D>& v) {
   if constexpr (D == 3) {
     return v;
   } else {
@@ -36,7 +38,7 @@ Vec3 to_3d(const Vec<D>& v) {
 
 // Maps a 3D vector into the model's space (2D: drops y).
 template <int D>
-Vec<D> from_3d(const Vec3& v) {
+SLUICE_HOST_DEVICE Vec<D> from_3d(const Vec3& v) {
   if constexpr (D == 3) {
     return v;
   } else {

@@ -3,7 +3,7 @@
 // the same arithmetic, so that both give the same bits.
 #pragma once
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

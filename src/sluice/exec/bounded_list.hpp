@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/io/wall_pieces.hpp"
 

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "sluice/core/host_device.hpp"
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sluice/core/host_device.hpp"
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 

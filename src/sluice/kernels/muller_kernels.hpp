@@ -9,8 +9,8 @@
 
 #include <numbers>
 
+#include "sluice/core/host_device.hpp"
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "sluice/core/host_device.hpp"
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 
@@ -22,9 +22,9 @@ struct WendlandC2 {
         norm(D == 2 ? 7.0 / (4.0 * std::numbers::pi * h * h)
                     : 21.0 / (16.0 * std::numbers::pi * h * h * h)) {}
 
-  Real support() const { return 2 * h; }
+  SLUICE_HOST_DEVICE Real support() const { return 2 * h; }
 
-  Real value(Real r) const {
+  SLUICE_HOST_DEVICE Real value(Real r) const {
     const Real q = r * inverse_h;
     if (q >= 2) return 0;
     const Real t = 1 - 0.5 * q;
@@ -33,7 +33,7 @@ struct WendlandC2 {
   }
 
   // (1/r) dW/dr, so that grad W(r_ij) = r_ij * gradient_factor(|r_ij|). Finite at r = 0.
-  Real gradient_factor(Real r) const {
+  SLUICE_HOST_DEVICE Real gradient_factor(Real r) const {
     const Real q = r * inverse_h;
     if (q >= 2) return 0;
     const Real t = 1 - 0.5 * q;

@@ -16,7 +16,7 @@
 
 #include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/particles/particle_set.hpp"
 
 namespace sluice {

@@ -24,6 +24,7 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/constraint/constraint_parameters.hpp"
 #include "sluice/fluid/constraint/density_constraints.hpp"
+#include "sluice/fluid/constraint/density_row_build.hpp"
 #include "sluice/fluid/constraint/device_constraint_groups.hpp"
 #include "sluice/fluid/constraint/viscosity_constraints.hpp"
 #include "sluice/fluid/flat_wall_share.hpp"
@@ -226,7 +227,7 @@ class ConstraintModel final : public ParticleFluid<D> {
   void body_point_forces(const std::vector<BodyKinematics>&, std::vector<Vec3>&) const override {}
 
  private:
-  static constexpr std::uint32_t kNoRow = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::uint32_t kNoRow = kNoDensityRow;
   static constexpr std::size_t kBlock = 1024;
 
   // A block's fluid rows' neighbours for the viscosity constraints (kernel values).
@@ -286,7 +287,9 @@ class ConstraintModel final : public ParticleFluid<D> {
       row_of_[i] = static_cast<std::uint32_t>(row_particle_.size());
       row_particle_.push_back(static_cast<std::uint32_t>(i));
     }
-    const std::vector<BodyKinematics> motion = bodies_->motion();
+    std::vector<Vec3> body_centre;
+    for (const BodyKinematics& m : bodies_->motion()) body_centre.push_back(m.position);
+    const DensityRowInput<D> input = row_input(body_centre);
     const std::size_t blocks = (row_particle_.size() + kBlock - 1) / kBlock;
     blocks_.resize(blocks);
     viscous_blocks_.resize(blocks);
@@ -297,7 +300,7 @@ class ConstraintModel final : public ParticleFluid<D> {
       viscous_blocks_[k].clear();
       const std::size_t end = std::min(row_particle_.size(), (k + 1) * kBlock);
       for (std::size_t r = k * kBlock; r < end; ++r) {
-        const Real ratio = add_row(std::uint32_t(r), motion, block, viscous_blocks_[k]);
+        const Real ratio = add_row(std::uint32_t(r), input, block, viscous_blocks_[k]);
         if (r < fluid) errors[k] = std::max(errors[k], ratio - 1);
       }
     });
@@ -325,82 +328,70 @@ class ConstraintModel final : public ParticleFluid<D> {
   }
 
  private:
-  // Row r into the block; returns rho_r / rho_ref.
-  Real add_row(std::uint32_t r, const std::vector<BodyKinematics>& motion,
-               DensityConstraints::Block& block, ViscousBlock& viscous) {
+  // Row r into the block (density_row_build.hpp); returns rho_r / rho_ref.
+  Real add_row(std::uint32_t r, const DensityRowInput<D>& input, DensityConstraints::Block& block,
+               ViscousBlock& viscous) {
+    // The block's entries as the row finds them; a body's parts added into one entry.
+    struct BlockSink {
+      DensityConstraints::Block& block;
+      ViscousBlock& viscous_block;
+      std::uint32_t r;
+      std::size_t first_body;
+      std::uint32_t entries = 0, viscous_entries = 0;
+      void entry(std::uint32_t row, const Vec3& q) {
+        block.entries.push_back({row, q});
+        ++entries;
+      }
+      void viscous(std::uint32_t row, Real w) {
+        viscous_block.entries.push_back({row, w, 0});
+        ++viscous_entries;
+      }
+      void body(std::uint32_t b, const Vec3& linear, const Vec3& angular) {
+        add_body_entry(block, first_body, r, b, linear, angular);
+      }
+    } sink{block, viscous, r, block.bodies.size()};
     auto& ps = this->state().particles;
     const std::size_t i = row_particle_[r];
-    const bool fluid = ps.is_fluid(i);
-    const std::int32_t own_body =
-        ps.body_point[i] >= 0 ? std::int32_t(this->body_points()[ps.body_point[i]].body) : -1;
-    const Real scale = dx_ * mass_ / rest_sum_;  // q = scale grad W
-    Real sum = mass_ * kernel_.value(0);
-    Real own = fluid ? 0 : sum;  // a boundary row's part of the sum from its own solid
-    Vec3 sigma = Vec3::Zero();
-    const std::size_t first_body = block.bodies.size();
-    std::uint32_t entries = 0, viscous_entries = 0;
-    this->state().cells.for_each_neighbor(
-        ps.position, i, kernel_.support() * kernel_.support(),
-        [&](std::size_t j, const Vec<D>& rij, Real r2) {
-          const bool j_fluid = ps.is_fluid(j);
-          const std::int32_t j_body =
-              ps.body_point[j] >= 0 ? std::int32_t(this->body_points()[ps.body_point[j]].body) : -1;
-          // Which neighbours a row counts: a fluid row, all; a wall row, the fluid and the
-          // walls; a body row, the fluid and its own body (another solid pressing on it is a
-          // contact of the rigid system, not a compression of the fluid).
-          const bool counts = fluid || j_fluid || (own_body < 0 ? j_body < 0 : j_body == own_body);
-          if (!counts) return;
-          const Real distance = std::sqrt(r2);
-          const Real w = kernel_.value(distance);
-          sum += mass_ * w;
-          if (!fluid && !j_fluid) own += mass_ * w;
-          if (fluid && j_fluid) {
-            viscous.entries.push_back({row_of_[j], w, 0});
-            ++viscous_entries;
-          }
-          if (!fluid && !j_fluid) return;
-          const Vec3 q = to_3d<D>(rij) * (scale * kernel_.gradient_factor(distance));
-          sigma += q;
-          if (j_fluid || row_of_[j] != kNoRow) {
-            block.entries.push_back({row_of_[j], q});
-            ++entries;
-          }
-          if (fluid && j_body >= 0) {
-            const Vec3 arm = to_3d<D>(ps.position[j]) - motion[std::size_t(j_body)].position;
-            add_body_entry(block, first_body, r, std::uint32_t(j_body), q, arm.cross(q));
-          }
-        });
-    if (own_body >= 0) {
-      const Vec3 arm = to_3d<D>(ps.position[i]) - motion[std::size_t(own_body)].position;
-      add_body_entry(block, first_body, r, std::uint32_t(own_body), -sigma, -arm.cross(sigma));
-    }
-    block.entry_counts.push_back(entries);
-    if (fluid) viscous.counts.push_back(viscous_entries);
-    block.body_counts.push_back(std::uint32_t(block.bodies.size() - first_body));
-    block.sigma.push_back(sigma);
-    // A body row counts its own body no more than a particle at its depth in a flat lattice
-    // wall counts its wall. Where a body is sampled closer than the lattice (a cylinder's rim,
-    // a thin part's middle layer, a box's edges), the excess held the row over the rest
-    // density with no fluid near: a constraint that no motion of the fluid can meet, and the
-    // solve flung fluid particles at 70-90 m/s (the parked vehicle's 0.12 m wheels). The
-    // body's part is fixed (it moves rigidly), so only the row's value changes, not its
-    // Jacobian.
-    if (own_body >= 0) sum -= std::max<Real>(0, own - body_point_share_[ps.body_point[i]]);
-    const Real ratio = sum / rest_sum_;
-    block.c.push_back(dx_ * (1 - ratio));
-    ps.density[i] = rho0_ * ratio;
-    return ratio;
+    const DensityRowValues row = build_density_row(input, r, sink);
+    block.entry_counts.push_back(sink.entries);
+    if (ps.is_fluid(i)) viscous.counts.push_back(sink.viscous_entries);
+    block.body_counts.push_back(std::uint32_t(block.bodies.size() - sink.first_body));
+    block.sigma.push_back(row.sigma);
+    block.c.push_back(row.c);
+    ps.density[i] = rho0_ * row.ratio;
+    return row.ratio;
+  }
+
+  // What the rows are built from (density_row_build.hpp), for the bodies' present centres.
+  DensityRowInput<D> row_input(const std::vector<Vec3>& body_centre) const {
+    const auto& ps = this->state().particles;
+    return {this->state().cells.view(),
+            ps.position.data(),
+            ps.kind.data(),
+            ps.body_point.data(),
+            point_body_.data(),
+            body_point_share_.data(),
+            body_centre.data(),
+            row_of_.data(),
+            row_particle_.data(),
+            kernel_,
+            mass_,
+            rest_sum_,
+            dx_};
   }
 
   // For each body point, what a particle at its depth in a flat lattice wall of as many layers
-  // as the body's sums from its own wall (flat_wall_share.hpp).
+  // as the body's sums from its own wall (flat_wall_share.hpp), and its body.
   void find_body_point_shares() {
     const int layers = wall_layers(kernel_.support(), dx_);
     const auto w = [this](Real r) { return mass_ * kernel_.value(r); };
     const std::vector<int> layer = body_point_layers(*bodies_, this->body_points(), dx_, layers);
     body_point_share_.resize(layer.size());
-    for (std::size_t k = 0; k < layer.size(); ++k)
+    point_body_.resize(layer.size());
+    for (std::size_t k = 0; k < layer.size(); ++k) {
       body_point_share_[k] = flat_wall_sum<D>(w, kernel_.support(), dx_, layers, layer[k]);
+      point_body_[k] = std::uint32_t(this->body_points()[k].body);
+    }
   }
 
   // Adds (linear, angular) to row r's entry for `body` among the row's entries from `from`.
@@ -427,8 +418,9 @@ class ConstraintModel final : public ParticleFluid<D> {
   std::vector<std::uint32_t> row_of_;        // particle -> row (kNoRow: none)
   std::vector<std::uint32_t> row_particle_;  // row -> particle
   std::vector<Wrench> body_load_;
-  std::vector<Real> body_point_share_;  // find_body_point_shares
-  std::size_t first_ = 0;               // the fluid particles' first body in the problem
+  std::vector<Real> body_point_share_;     // find_body_point_shares
+  std::vector<std::uint32_t> point_body_;  // each body point's body
+  std::size_t first_ = 0;                  // the fluid particles' first body in the problem
   Real max_speed_ = 0;
   Real density_error_ = 0, largest_error_ = 0;
   long steps_ = 0, row_total_ = 0, entry_total_ = 0;

@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "sluice/ccp/ccp_bodies.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "sluice/core/host_device.hpp"
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
 
 namespace sluice {
 

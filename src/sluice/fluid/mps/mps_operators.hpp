@@ -18,7 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/mps/neighbour_view.hpp"
 #include "sluice/kernels/mps_weight.hpp"
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 
 namespace sluice {

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/mps/mps_loop_bodies.hpp"
 #include "sluice/fluid/mps/mps_operators.hpp"
 

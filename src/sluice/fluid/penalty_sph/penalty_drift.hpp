@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "sluice/exec/bounded_list.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
 #include "sluice/fluid/penalty_sph/solid_particles.hpp"
 

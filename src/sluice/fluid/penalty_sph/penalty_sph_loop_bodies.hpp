@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/kernels/muller_kernels.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "sluice/exec/bounded_list.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/penalty_sph/penalty_boundary.hpp"
 #include "sluice/fluid/penalty_sph/solid_particles.hpp"
 #include "sluice/kernels/muller_kernels.hpp"

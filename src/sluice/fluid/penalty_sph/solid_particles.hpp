@@ -13,7 +13,7 @@
 #include <limits>
 #include <vector>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 #include "sluice/particles/particle_set.hpp"
 

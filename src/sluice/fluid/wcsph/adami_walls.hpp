@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
 #include "sluice/neighbor/cell_list.hpp"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

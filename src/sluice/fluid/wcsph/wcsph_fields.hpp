@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "sluice/core/types.hpp"
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
 #include "sluice/fluid/wcsph/wcsph_pair_term.hpp"

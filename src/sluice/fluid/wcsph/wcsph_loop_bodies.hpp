@@ -1,6 +1,6 @@
 // The loop bodies of a WCSPH step, each a function of one particle's index over plain arrays, so
 // that the OpenMP policy runs them on the host's particle set and the CUDA policy on the device's
-// copy of it (exec/host_device.hpp): kick and drift, packing for the pair loops, the rates and
+// copy of it (core/host_device.hpp): kick and drift, packing for the pair loops, the rates and
 // the fluid's force on body particles; the walls' state is adami_walls.hpp's. The model
 // (wcsph_model.hpp) and the device run (wcsph_device_run.hpp) call these for the physics.
 #pragma once
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/wcsph_fields.hpp"
 #include "sluice/fluid/wcsph/wcsph_pair_term.hpp"

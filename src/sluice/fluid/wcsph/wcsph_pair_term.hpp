@@ -10,7 +10,7 @@
 #include <array>
 #include <cmath>
 
-#include "sluice/exec/host_device.hpp"
+#include "sluice/core/host_device.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 
 namespace sluice {
