@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 
 namespace sluice {
 

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstddef>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 
 namespace sluice::ccp_steps {
 

@@ -7,8 +7,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 
 namespace sluice {
 

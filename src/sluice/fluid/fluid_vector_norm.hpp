@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 
 namespace sluice {
 

@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include "sluice/core/host_device.hpp"
 #include "sluice/core/state_archive.hpp"
 #include "sluice/core/types.hpp"
-#include "sluice/core/host_device.hpp"
 
 namespace sluice {
 

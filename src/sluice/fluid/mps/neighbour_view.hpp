@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 #include "sluice/neighbor/cell_list.hpp"
 
 namespace sluice {

@@ -20,8 +20,8 @@
 
 #include <algorithm>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 
 namespace sluice {
 

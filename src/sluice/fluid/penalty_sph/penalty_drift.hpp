@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "sluice/exec/bounded_list.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/exec/bounded_list.hpp"
 #include "sluice/fluid/penalty_sph/solid_contact_stepper.hpp"
 #include "sluice/fluid/penalty_sph/solid_particles.hpp"
 

@@ -25,8 +25,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "sluice/exec/bounded_list.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/exec/bounded_list.hpp"
 #include "sluice/fluid/penalty_sph/penalty_boundary.hpp"
 #include "sluice/fluid/penalty_sph/solid_particles.hpp"
 #include "sluice/kernels/muller_kernels.hpp"

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <limits>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 
 namespace sluice {
 

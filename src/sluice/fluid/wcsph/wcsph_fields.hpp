@@ -5,8 +5,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "sluice/core/types.hpp"
 #include "sluice/core/host_device.hpp"
+#include "sluice/core/types.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
 #include "sluice/fluid/wcsph/wcsph_pair_term.hpp"
