@@ -275,13 +275,9 @@ class ConstraintModel final : public ParticleFluid<D> {
       row_particle_.push_back(static_cast<std::uint32_t>(i));
     }
     const std::size_t fluid = row_particle_.size();
-    std::vector<char> near_fluid(ps.size(), 0);
-    exec::Default::for_each(ps.size(), [&](std::size_t i) {
-      if (ps.is_fluid(i)) return;
-      cells.for_each_neighbor(ps.position, i, support2, [&](std::size_t j, const Vec<D>&, Real) {
-        if (ps.is_fluid(j)) near_fluid[i] = 1;
-      });
-    });
+    std::vector<char> near_fluid(ps.size());
+    exec::Default::for_each(ps.size(), NearFluid<D>{cells.view(), ps.position.data(),
+                                                    ps.kind.data(), support2, near_fluid.data()});
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!near_fluid[i]) continue;
       row_of_[i] = static_cast<std::uint32_t>(row_particle_.size());

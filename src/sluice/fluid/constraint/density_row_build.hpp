@@ -1,8 +1,9 @@
 // Building one row of the density constraints (constraint_model.hpp says what a row counts) as a
 // function of the row's index over plain arrays, so that the host builds its rows with it and a
-// device can build its own: the row's neighbours in the cells' order, its Jacobian entries, its
-// parts on rigid bodies, its fluid neighbours' kernel values for the viscosity rows, its sigma,
-// its constraint value and its density. What the row finds goes to a sink:
+// device can build its own (and which boundary particles get a row, NearFluid): the row's
+// neighbours in the cells' order, its Jacobian entries, its parts on rigid bodies, its fluid
+// neighbours' kernel values for the viscosity rows, its sigma, its constraint value and its
+// density. What the row finds goes to a sink:
 //   sink.entry(row, q)                a neighbour with a row of its own, and q_rk
 //   sink.viscous(row, w)              a fluid row's fluid neighbour, and W
 //   sink.body(body, linear, angular)  a part of the row's Jacobian on a rigid body (the sink
@@ -21,6 +22,28 @@
 namespace sluice {
 
 inline constexpr std::uint32_t kNoDensityRow = 0xFFFFFFFFu;
+
+// 1 for a wall or body particle with a fluid particle within the kernel's support (it gets a
+// row), 0 otherwise.
+template <int D>
+struct NearFluid {
+  CellGridView<D> cells;
+  const Vec<D>* position;
+  const ParticleKind* kind;
+  Real support2;
+  char* flag;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    flag[i] = 0;
+    if (kind[i] == ParticleKind::kFluid) return;
+    const Vec<D>& xi = position[i];
+    cells.for_each_candidate_range(xi.data(), [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t j = begin; j < end; ++j) {
+        if (j == i || kind[j] != ParticleKind::kFluid) continue;
+        if ((xi - position[j]).squaredNorm() < support2) flag[i] = 1;
+      }
+    });
+  }
+};
 
 template <int D>
 struct DensityRowInput {

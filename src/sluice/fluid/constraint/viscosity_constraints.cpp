@@ -18,17 +18,10 @@ void ViscosityConstraints::begin(std::size_t particles, Real inverse_mass, std::
 
 void ViscosityConstraints::normalise() {
   std::vector<Real> total(particles_, 0);
-  exec::Default::for_each(particles_, [&](std::size_t i) {
-    for (std::size_t k = offsets_[i]; k < offsets_[i + 1]; ++k) total[i] += entries_[k].forward;
-  });
-  exec::Default::for_each(particles_, [&](std::size_t i) {
-    for (std::size_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
-      Entry& e = entries_[k];
-      const Real w = e.forward;
-      e.forward = w / total[i];
-      e.backward = w / total[e.particle];
-    }
-  });
+  exec::Default::for_each(particles_,
+                          ViscosityKernelSum{offsets_.data(), entries_.data(), total.data()});
+  exec::Default::for_each(particles_,
+                          ViscosityWeights{offsets_.data(), entries_.data(), total.data()});
 }
 
 void ViscosityConstraints::row_velocities(const BodyVelocities& u, std::span<Real> out) const {

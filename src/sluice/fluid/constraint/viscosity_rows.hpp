@@ -1,7 +1,7 @@
 // The viscosity constraints' rows (viscosity_constraints.hpp) as loop bodies over plain arrays,
 // each a function of one fluid particle's index (its D rows), so that the host's threads run
-// them on the group's vectors and a device run on its copy: the rows' velocities, the
-// gathered impulses, the diagonal.
+// them on the group's vectors and a device run on its copy: the weights, the rows' velocities,
+// the gathered impulses, the diagonal.
 #pragma once
 
 #include <cstddef>
@@ -27,6 +27,31 @@ struct ViscosityRows {
   const ViscosityEntry* entries;
   int axes[3];
   std::size_t axis_count;
+};
+
+// Particle i's neighbours' kernel values summed (entries' `forward` holding W before normalise).
+struct ViscosityKernelSum {
+  const std::size_t* offsets;
+  const ViscosityEntry* entries;
+  Real* total;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    for (std::size_t k = offsets[i]; k < offsets[i + 1]; ++k) total[i] += entries[k].forward;
+  }
+};
+
+// Particle i's entries' W turned into the weights w_ij = W / total_i and w_ji = W / total_j.
+struct ViscosityWeights {
+  const std::size_t* offsets;
+  ViscosityEntry* entries;
+  const Real* total;
+  SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
+    for (std::size_t k = offsets[i]; k < offsets[i + 1]; ++k) {
+      ViscosityEntry& e = entries[k];
+      const Real w = e.forward;
+      e.forward = w / total[i];
+      e.backward = w / total[e.particle];
+    }
+  }
 };
 
 // Particle i's rows: its velocity less the weighted mean of its neighbours', along each axis.
