@@ -76,8 +76,8 @@ class DeviceCcpProblem {
   using GroupCopier =
       std::function<std::unique_ptr<DeviceCcpGroup<Backend>>(const ConstraintGroup&)>;
 
-  // The kinds of group a problem may hold beyond the ones each copier knows (row groups and
-  // sphere contacts: device_ccp_groups.hpp adds those).
+  // Adds a copier: each group of a problem is copied by the first copier that knows its kind
+  // (add_ccp_group_copiers in device_ccp_groups.hpp adds those of row groups and sphere contacts).
   void add_copier(GroupCopier copier) { copiers_.push_back(std::move(copier)); }
 
   // Copies `problem` (its bodies, its groups and their warm start) to the device; `problem`
