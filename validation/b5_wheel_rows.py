@@ -14,23 +14,11 @@ import csv
 import os
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
+from frames import read_frame
 
 WHEELS = ("fl", "fr", "rl", "rr")
 RADIUS, HALF_WIDTH = 0.2, 0.06  # cases/fording.yaml's wheels
 REST_DENSITY = 1000.0
-
-
-def read_frame(path):
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    data = reader.GetOutput()
-    points = vtk_to_numpy(data.GetPoints().GetData())
-    fields = data.GetPointData()
-    return points, {name: vtk_to_numpy(fields.GetArray(name))
-                    for name in ("kind", "density", "pressure")}
 
 
 def wheel_centre(run, wheel, time):
@@ -46,7 +34,8 @@ def main():
     args = parser.parse_args()
     for run in args.runs:
         spacing = float(run.rstrip("/").rsplit("_", 1)[1])
-        points, fields = read_frame(os.path.join(run, "frames", f"frame_{args.frame:06d}.vtp"))
+        points, fields = read_frame(os.path.join(run, "frames", f"frame_{args.frame:06d}.vtp"),
+                                    "kind", "density", "pressure")
         time = args.frame * 0.05  # the case's output interval
         print(f"{run}, t = {time:g} s")
         kind, density, pressure = fields["kind"], fields["density"], fields["pressure"]

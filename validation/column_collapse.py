@@ -20,9 +20,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import vtk
+from frames import read_frame
 from runs import case_parser, run_case, require, save_figure
-from vtk.util.numpy_support import vtk_to_numpy
 
 SPACING = 0.01     # the case's grain lattice [m]
 SMALLER_SIDE = 20  # grains across the column's smaller side
@@ -41,14 +40,9 @@ def lube(a):
 def last_frame(out):
     frames = sorted(glob.glob(os.path.join(out, "frames", "*.vtp")))
     require(frames[-1] if frames else os.path.join(out, "frames"))
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(frames[-1])
-    reader.Update()
-    data = reader.GetOutput()
-    kind = vtk_to_numpy(data.GetPointData().GetArray("kind"))
-    points = vtk_to_numpy(data.GetPoints().GetData())[kind == 0]
-    radius = vtk_to_numpy(data.GetPointData().GetArray("radius"))[kind == 0]
-    return points[:, 0], points[:, 2], radius
+    points, fields = read_frame(frames[-1], "kind", "radius")
+    fluid = fields["kind"] == 0
+    return points[fluid, 0], points[fluid, 2], fields["radius"][fluid]
 
 
 def deposit(x, z, radius):

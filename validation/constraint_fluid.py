@@ -24,10 +24,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from dam_break_2d import read_reference, rms_error
+from frames import read_frame
 from probes_csv import read_probe
 from runs import ROOT, require, save_figure
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 CASE = os.path.join(ROOT, "cases", "dam_break_2d.yaml")
@@ -70,13 +69,8 @@ def frames(out):
 
 def fluid_density_ratio(path):
     """rho / rho0 - 1 of the fluid particles (kind 0) of one .vtp frame."""
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    data = reader.GetOutput().GetPointData()
-    kind = vtk_to_numpy(data.GetArray("kind"))
-    density = vtk_to_numpy(data.GetArray("density"))[kind == 0]
-    return density / REST_DENSITY - 1.0
+    _, fields = read_frame(path, "kind", "density")
+    return fields["density"][fields["kind"] == 0] / REST_DENSITY - 1.0
 
 
 def density_errors(out):

@@ -14,10 +14,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+from frames import read_frame
 from probes_csv import read_probe
 from runs import ROOT, save_figure
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 RHO, G, H = 1000.0, 9.81, 1.0
@@ -28,14 +27,9 @@ def main():
     subprocess.run([SLUICE, "run", os.path.join(ROOT, "cases", "hydrostatic_2d.yaml"), "--out", out],
                    check=True, stdout=subprocess.DEVNULL)
     last = list(ET.parse(os.path.join(out, "hydrostatic_2d.pvd")).getroot().iter("DataSet"))[-1]
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(os.path.join(out, last.get("file")))
-    reader.Update()
-    data = reader.GetOutput()
-    z = vtk_to_numpy(data.GetPoints().GetData())[:, 2]
-    p = vtk_to_numpy(data.GetPointData().GetArray("pressure"))
-    kind = vtk_to_numpy(data.GetPointData().GetArray("kind"))
-    fluid = kind == 0
+    points, fields = read_frame(os.path.join(out, last.get("file")), "pressure", "kind")
+    z, p = points[:, 2], fields["pressure"]
+    fluid = fields["kind"] == 0
     expected = RHO * G * (H - z[fluid])
     l2 = math.sqrt(((p[fluid] - expected) ** 2).mean()) / (RHO * G * H)
     print(f"t = {last.get('timestep')} s: pressure L2 error {100 * l2:.2f} % of rho g H")

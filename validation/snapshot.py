@@ -13,19 +13,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
-
-
-def read_frame(path):
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    data = reader.GetOutput()
-    points = vtk_to_numpy(data.GetPoints().GetData())
-    speed = np.linalg.norm(vtk_to_numpy(data.GetPointData().GetArray("velocity")), axis=1)
-    kind = vtk_to_numpy(data.GetPointData().GetArray("kind"))
-    return points, speed, kind
+from frames import read_frame
 
 
 def main():
@@ -43,7 +31,8 @@ def main():
     fig, axes = plt.subplots(len(times), 1, figsize=(7, 2.3 * len(times)), squeeze=False)
     for ax, wanted in zip(axes[:, 0], times):
         time, file = min(frames, key=lambda frame: abs(frame[0] - wanted))
-        points, speed, kind = read_frame(os.path.join(base, file))
+        points, fields = read_frame(os.path.join(base, file), "velocity", "kind")
+        speed, kind = np.linalg.norm(fields["velocity"], axis=1), fields["kind"]
         if args.x:
             keep = (points[:, 0] >= args.x[0]) & (points[:, 0] <= args.x[1])
             points, speed, kind = points[keep], speed[keep], kind[keep]

@@ -16,9 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+from frames import read_frame
 from runs import ROOT, case_parser, require, run_case, save_figure
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
 VARIANTS = [
     ("default (h = 1.5 dx, alpha = 0.02, dx = 0.025 m)", []),
@@ -87,13 +86,9 @@ def frame_at(out, time):
     """The fluid's positions (x, z) and velocities of the frame nearest `time`."""
     series = ET.parse(os.path.join(out, "hydrostatic_2d.pvd")).getroot().iter("DataSet")
     nearest = min(series, key=lambda d: abs(float(d.get("timestep")) - time))
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(os.path.join(out, nearest.get("file")))
-    reader.Update()
-    data = reader.GetOutput()
-    x = vtk_to_numpy(data.GetPoints().GetData())
-    v = vtk_to_numpy(data.GetPointData().GetArray("velocity"))
-    fluid = vtk_to_numpy(data.GetPointData().GetArray("kind")) == 0
+    x, fields = read_frame(os.path.join(out, nearest.get("file")), "velocity", "kind")
+    v = fields["velocity"]
+    fluid = fields["kind"] == 0
     return float(nearest.get("timestep")), x[fluid][:, [0, 2]], v[fluid][:, [0, 2]]
 
 

@@ -3,8 +3,6 @@
 // granular fluid's sphere contacts (sphere_contact_rows.hpp).
 #pragma once
 
-#include <memory>
-
 #include "sluice/ccp/device_ccp_problem.hpp"
 #include "sluice/ccp/row_group.hpp"
 #include "sluice/ccp/sphere_contacts.hpp"
@@ -95,13 +93,8 @@ class DeviceSphereContacts final : public DeviceCcpGroup<Backend> {
 // Adds the copiers of row groups and sphere contacts to `device`.
 template <class Backend>
 void add_ccp_group_copiers(DeviceCcpProblem<Backend>& device) {
-  device.add_copier([](const ConstraintGroup& group) -> std::unique_ptr<DeviceCcpGroup<Backend>> {
-    if (const auto* rows = dynamic_cast<const RowGroup*>(&group))
-      return std::make_unique<DeviceRowGroup<Backend>>(*rows);
-    if (const auto* spheres = dynamic_cast<const SphereContacts*>(&group))
-      return std::make_unique<DeviceSphereContacts<Backend>>(*spheres);
-    return nullptr;
-  });
+  add_copier_of<RowGroup, DeviceRowGroup<Backend>>(device);
+  add_copier_of<SphereContacts, DeviceSphereContacts<Backend>>(device);
 }
 
 }  // namespace sluice

@@ -161,6 +161,17 @@ class DeviceCcpProblem {
   typename Backend::Workspace workspace_;
 };
 
+// Adds to `device` a copier of the groups of kind Host, copied as Device (constructed from the
+// host's group).
+template <class Host, class Device, class Backend>
+void add_copier_of(DeviceCcpProblem<Backend>& device) {
+  device.add_copier([](const ConstraintGroup& group) -> std::unique_ptr<DeviceCcpGroup<Backend>> {
+    if (const auto* host = dynamic_cast<const Host*>(&group))
+      return std::make_unique<Device>(*host);
+    return nullptr;
+  });
+}
+
 // solve_ccp on the device: `problem` copied there, solved by settings.solver, its groups given
 // the impulses and `velocities` the bodies' velocities after them.
 template <class Backend>

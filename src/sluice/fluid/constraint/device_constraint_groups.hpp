@@ -2,8 +2,6 @@
 // rows (density_rows.hpp) and viscosity rows (viscosity_rows.hpp).
 #pragma once
 
-#include <memory>
-
 #include "sluice/ccp/ccp_steps.hpp"
 #include "sluice/ccp/device_ccp_problem.hpp"
 #include "sluice/fluid/constraint/density_constraints.hpp"
@@ -109,13 +107,8 @@ class DeviceViscosityConstraints final : public DeviceCcpGroup<Backend> {
 // Adds the copiers of the groups above to `device`.
 template <class Backend>
 void add_constraint_group_copiers(DeviceCcpProblem<Backend>& device) {
-  device.add_copier([](const ConstraintGroup& group) -> std::unique_ptr<DeviceCcpGroup<Backend>> {
-    if (const auto* rows = dynamic_cast<const DensityConstraints*>(&group))
-      return std::make_unique<DeviceDensityConstraints<Backend>>(*rows);
-    if (const auto* rows = dynamic_cast<const ViscosityConstraints*>(&group))
-      return std::make_unique<DeviceViscosityConstraints<Backend>>(*rows);
-    return nullptr;
-  });
+  add_copier_of<DensityConstraints, DeviceDensityConstraints<Backend>>(device);
+  add_copier_of<ViscosityConstraints, DeviceViscosityConstraints<Backend>>(device);
 }
 
 }  // namespace sluice
