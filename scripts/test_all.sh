@@ -23,8 +23,8 @@ cmake --build --preset release -j "$jobs"
 ctest --preset release -j "$jobs"
 
 # The slowest physics checks (a minute or more each: the falling cube, the granular column
-# collapses and floating box, the six-cube dam break, F3 to 1 s and F2 at half each model's CI
-# spacing) run in the release build only, to keep CI well under an hour on two cores; their margins on
+# collapses and floating box, the six-cube dam break, F3 to 1 s, F2 at half each model's CI
+# spacing and the sliding wheel) run in the release build only, to keep CI well under an hour on two cores; their margins on
 # both builds are in docs/testing.md.
 echo "== baseline build (x86-64-v2) and the physics checks but the slowest"
 cmake --preset baseline

@@ -137,6 +137,40 @@ TEST(ConstraintRows, ImpulsesActThroughTheTranspose) {
   expect_transpose(box, viscous, mass);
 }
 
+// Of the box's particles only its outer layer (half a spacing deep) gets density rows, though
+// its second layer has fluid within the kernel's support too (density_row_build.hpp,
+// NearFluid).
+TEST(ConstraintRows, OnlyABodysOuterLayerHasRows) {
+  ShakenBox box;
+  const auto& ps = box.model.state().particles;
+  const Vec3 centre = box.sim.bodies().state(0).position;
+  const Vec3 half = 0.5 * box.sim.config().bodies.front().size;
+  const Real dx = 0.1, support = 2 * 1.3 * dx;  // the model's default h = 1.3 dx
+  // A box particle's depth below the box's faces (x and z in 2D).
+  auto depth = [&](std::size_t i) {
+    const Vec3 p = to_3d<2>(ps.position[i]) - centre;
+    return std::min(half.x() - std::abs(p.x()), half.z() - std::abs(p.z()));
+  };
+  std::vector<char> has_row(ps.size(), 0);
+  for (std::size_t r = 0; r < box.model.rows().size(); ++r) has_row[box.model.row_particle(r)] = 1;
+  int outer_rows = 0, deeper_near_fluid = 0;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (ps.body_point[i] < 0) continue;
+    const bool outer = depth(i) < dx;
+    if (has_row[i]) {
+      EXPECT_TRUE(outer) << "body particle " << i << " at depth " << depth(i) << " m has a row";
+      outer_rows += outer;
+    }
+    bool near = false;
+    for (std::size_t j = 0; j < ps.size(); ++j) {
+      near = near || (ps.is_fluid(j) && (ps.position[j] - ps.position[i]).norm() < support);
+    }
+    deeper_near_fluid += !outer && near;
+  }
+  EXPECT_GT(outer_rows, 0);
+  EXPECT_GT(deeper_near_fluid, 0);  // the rule left some out
+}
+
 // A uniform motion has no velocity relative to the neighbours' mean: the viscosity rows read
 // zero for it.
 TEST(ConstraintRows, ViscosityRowsLeaveAUniformMotionAlone) {

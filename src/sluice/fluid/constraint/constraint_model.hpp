@@ -259,10 +259,10 @@ class ConstraintModel final : public ParticleFluid<D> {
   }
 
  public:
-  // The rows for the particles as they stand: the fluid particles, then the wall and body
-  // particles with fluid in reach; each row's neighbours, Jacobian and constraint value, and
-  // each row particle's density (rho0 times its share of the rest sum). The model's stage after
-  // the neighbour sort (public for the tests of the Jacobian).
+  // The rows for the particles as they stand: the fluid particles, then the wall particles and
+  // the bodies' outer-layer particles with fluid in reach (NearFluid); each row's neighbours,
+  // Jacobian and constraint value, and each row particle's density (rho0 times its share of the
+  // rest sum). The model's stage after the neighbour sort (public for the tests of the Jacobian).
   void build_rows() {
     auto& ps = this->state().particles;
     const auto& cells = this->state().cells;
@@ -276,8 +276,10 @@ class ConstraintModel final : public ParticleFluid<D> {
     }
     const std::size_t fluid = row_particle_.size();
     std::vector<char> near_fluid(ps.size());
-    exec::Default::for_each(ps.size(), NearFluid<D>{cells.view(), ps.position.data(),
-                                                    ps.kind.data(), support2, near_fluid.data()});
+    exec::Default::for_each(
+        ps.size(),
+        NearFluid<D>{cells.view(), ps.position.data(), ps.kind.data(), ps.body_point.data(),
+                     outer_point_.data(), support2, near_fluid.data()});
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!near_fluid[i]) continue;
       row_of_[i] = static_cast<std::uint32_t>(row_particle_.size());
@@ -384,9 +386,11 @@ class ConstraintModel final : public ParticleFluid<D> {
     const std::vector<int> layer = body_point_layers(*bodies_, this->body_points(), dx_, layers);
     body_point_share_.resize(layer.size());
     point_body_.resize(layer.size());
+    outer_point_.resize(layer.size());
     for (std::size_t k = 0; k < layer.size(); ++k) {
       body_point_share_[k] = flat_wall_sum<D>(w, kernel_.support(), dx_, layers, layer[k]);
       point_body_[k] = std::uint32_t(this->body_points()[k].body);
+      outer_point_[k] = layer[k] == 0;
     }
   }
 
@@ -416,6 +420,7 @@ class ConstraintModel final : public ParticleFluid<D> {
   std::vector<Wrench> body_load_;
   std::vector<Real> body_point_share_;     // find_body_point_shares
   std::vector<std::uint32_t> point_body_;  // each body point's body
+  std::vector<char> outer_point_;          // each body point: 1 in its body's outer layer
   std::size_t first_ = 0;                  // the fluid particles' first body in the problem
   Real max_speed_ = 0;
   Real density_error_ = 0, largest_error_ = 0;
