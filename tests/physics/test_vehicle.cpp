@@ -131,7 +131,9 @@ TEST(Vehicle, TheGridsProjectionKeepsTheJointsOfTheBodiesItMoves) {
 // others (on the fording vehicle near 0 N against 200-500 N): written as it stood at the row's
 // time, the towed box's mean drag read 278 N/m against 340 N/m over every step. The mean of the
 // rows over 0.4-0.8 s must match the time-weighted mean over every step of an unwritten run
-// within 3 % (the steps differ only where the rows' times shorten them).
+// that lands its steps on the rows' times as the written run does, and so takes the same
+// steps, within 0.5 %. (Runs whose steps land elsewhere are other samples of the flow: the
+// written run's mean drag over 0.4-0.8 s spans 332-357 N/m for rows every 0.005-0.025 s.)
 TEST(Vehicle, LoadRowsAreMeansOverTheirIntervals) {
   const io::CaseConfig config = towed_box("constraint");
   ScratchDir scratch("loads");
@@ -154,20 +156,23 @@ TEST(Vehicle, LoadRowsAreMeansOverTheirIntervals) {
 
   Simulation<2> sim(config);
   double impulse = 0, span = 0, before = 0;
-  testing::run_until(sim, config.end_time, [&](const StepClock&) {
-    const double dt = sim.time() - before;
-    before = sim.time();
-    if (sim.time() <= 0.4 + 1e-9) return;
-    impulse -= dt * sim.coupler().fluid_force()[1].x();
-    span += dt;
-  });
+  for (int row = 1; row <= static_cast<int>(std::lround(config.end_time / config.body_interval));
+       ++row) {
+    testing::run_until(sim, row * config.body_interval, [&](const StepClock&) {
+      const double dt = sim.time() - before;
+      before = sim.time();
+      if (sim.time() <= 0.4 + 1e-9) return;
+      impulse -= dt * sim.coupler().fluid_force()[1].x();
+      span += dt;
+    });
+  }
   const double every_step = impulse / span;
   std::printf(
       "towed box (constraint): mean drag of loads.csv's rows %.1f N/m, over every step "
       "%.1f N/m (%+.2f %%)\n",
       rows, every_step, 100 * (rows / every_step - 1));
   testing::expect_figure({"towed box's drag, loads.csv's rows against every step", "%", 2},
-                         100 * (rows / every_step - 1), testing::Bound::within, 3);
+                         100 * (rows / every_step - 1), testing::Bound::within, 0.5);
 }
 
 }  // namespace
