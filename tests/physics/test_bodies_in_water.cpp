@@ -83,8 +83,8 @@ testing::FloatingBoxDraft testing::floating_box_draft(const std::vector<std::str
 
 namespace {
 
-// B1 with a model.
-void floating_box_draft(const std::string& model, double drift_bar = 0.01) {
+// B1 with a model: the draft within 3 % of 0.70 m, the drift below 1 cm.
+void floating_box_draft(const std::string& model) {
   const auto [draft, drift] = testing::floating_box_draft({"model.name=" + model});
   std::printf(
       "B1 (case, %s): mean draft %.4f m (Archimedes 0.70, %.2f %%), mean sideways offset over the "
@@ -93,8 +93,7 @@ void floating_box_draft(const std::string& model, double drift_bar = 0.01) {
   const std::string name = model == "wcsph" ? "B1" : "B1 `" + model + "`";
   expect_figure({name + " draft against 0.70 m", "%", 2}, 100 * (draft - 0.7) / 0.7, Bound::within,
                 3);
-  expect_figure({name + " mean sideways offset, last 4 s", "mm", 2}, 1e3 * drift, Bound::below,
-                1e3 * drift_bar);
+  expect_figure({name + " mean sideways offset, last 4 s", "mm", 2}, 1e3 * drift, Bound::below, 10);
 }
 
 TEST(CaseFloatingBox, DraftByArchimedes) {

@@ -1,10 +1,10 @@
 // The density constraints of a constraint fluid (Bodin, Lacoursière & Servin 2012) as a group
-// of the bodies' complementarity problem: one row per fluid particle, and one per wall particle, or
-// body particle of its body's outer layer, with fluid within its support (NearFluid). Row r asks
-// that particle's kernel-summed density not exceed the rest density: c_r = dx (1 - rho_r / rho_ref)
-// >= 0 (or = 0, bilateral), scaled by the spacing so that a row's velocity is in m/s like a
-// contact's. Its Jacobian comes from the kernel gradient: with q_rk = dx (m / rho_ref) grad W(x_r -
-// x_k),
+// of the bodies' complementarity problem: one row per fluid particle, and one per wall
+// particle, or particle of a body's outer layer, with fluid within its support (NearFluid).
+// Row r asks that particle's kernel-summed density not exceed the rest density:
+// c_r = dx (1 - rho_r / rho_ref) >= 0 (or = 0, bilateral), scaled by the spacing so that a
+// row's velocity is in m/s like a contact's. Its Jacobian comes from the kernel gradient: with
+// q_rk = dx (m / rho_ref) grad W(x_r - x_k),
 //   fluid row j:        J v = -sigma_j . v_j + sum_k q_jk . v_k  (k: fluid or on a body),
 //   wall or body row k: J v = sum_j q_kj . v_j - sigma_k . u_k    (j: fluid; u_k: the body's
 //                                                                    velocity at k),
