@@ -5,9 +5,11 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "child_runs.hpp"
@@ -17,6 +19,7 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/linear/hypre_session.hpp"
+#include "sluice/parallel/communicator.hpp"
 #include "sluice/sim/runner.hpp"
 #include "sluice/sim/size_estimate.hpp"
 #include "sweep_command.hpp"
@@ -29,9 +32,9 @@ void print_summary(const sluice::RunSummary& r) {
                        : fmt::format("{:.6g} s", r.simulated_time);
   fmt::print(
       "done: {} simulated in {} steps, {:.2f} s wall, {:.3g} M particle-steps/s "
-      "({} particles, {} threads), {} frames in {}\n",
+      "({} particles, {} threads{}), {} frames in {}\n",
       span, r.steps, r.wall_seconds, r.particle_steps_per_second() / 1e6, r.particles, r.threads,
-      r.frames, r.series_path);
+      r.ranks > 1 ? fmt::format(" on each of {} ranks", r.ranks) : "", r.frames, r.series_path);
   if (r.checkpoints > 0) fmt::print("  checkpoints written: {}\n", r.checkpoints);
   if (r.bodies > 0) {
     fmt::print("  {} bodies: {} solid sub-steps ({:.3g} per step, at most {} in a step)\n",
@@ -54,10 +57,30 @@ void print_summary(const sluice::RunSummary& r) {
   }
 }
 
+// Says what went wrong and gives the exit code. On several ranks a bad case or a divergence is
+// found by every rank alike: the first says it and stops them all with the code; another rank
+// waits for that, and speaks and stops them itself only where the failure was its own.
+int fail(const sluice::Communicator& ranks, int code, const char* what) {
+  if (!ranks.split()) {
+    fmt::print(stderr, "error: {}\n", what);
+    return code;
+  }
+  if (ranks.rank() != 0) std::this_thread::sleep_for(std::chrono::seconds(10));
+  fmt::print(stderr, "error: {}{}\n",
+             ranks.rank() == 0 ? "" : fmt::format("rank {}: ", ranks.rank()), what);
+  std::fflush(stderr);
+  ranks.abort(code);
+  return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  // The process's MPI and hypre: started by the first hypre solve, stopped when main returns.
+  // Under mpirun, MPI from the start (every rank runs the same command, in step); otherwise
+  // this process alone, and MPI only for hypre's solver, started by its first solve. Both stop
+  // when main returns, hypre first.
+  sluice::MpiSession mpi;
+  const sluice::Communicator ranks = sluice::Communicator::world();
   sluice::HypreSession hypre;
   CLI::App app{"sluice: free-surface flow with rigid bodies (particle methods)"};
   app.require_subcommand(1);
@@ -130,6 +153,10 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (ranks.split() && (sweep->parsed() || compare->parsed())) {
+      throw sluice::InputError(
+          "sweep and compare start their runs themselves: start them without mpirun");
+    }
     if (sweep->parsed()) {
       sweep_options.self = sluice::this_program();
       return sluice::run_sweep(sweep_options);
@@ -159,6 +186,7 @@ int main(int argc, char** argv) {
     const sluice::io::CaseConfig config = sluice::io::read_case(case_path, overrides);
     if (check->parsed()) {
       const auto c = sluice::check_case(config);
+      if (ranks.rank() != 0) return sluice::kExitOk;
       fmt::print(
           "{}: {}D case '{}' is valid\n  {}: {} ({} fluid, {} wall)\n  bodies: {} ({} "
           "particles)\n  memory: about {} (estimated from the geometry)\n  first time step: {:.4g} "
@@ -178,17 +206,15 @@ int main(int argc, char** argv) {
     options.stats_path = stats_path;
     options.live_progress = isatty(fileno(stderr)) != 0;
     options.hypre = &hypre;
+    options.ranks = &ranks;
     const auto summary = sluice::run_case(config, options);
-    print_summary(summary);
+    if (ranks.rank() == 0) print_summary(summary);
     return sluice::kExitOk;
   } catch (const sluice::InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return sluice::kExitBadInput;
+    return fail(ranks, sluice::kExitBadInput, e.what());
   } catch (const sluice::DivergenceError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return sluice::kExitDiverged;
+    return fail(ranks, sluice::kExitDiverged, e.what());
   } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return sluice::kExitFailure;
+    return fail(ranks, sluice::kExitFailure, e.what());
   }
 }

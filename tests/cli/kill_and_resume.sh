@@ -3,7 +3,12 @@
 # run that was never killed: every output file byte for byte (frames, series, probes, bodies'
 # CSVs, energy) and the final checkpoint. Used by tests/cli/CMakeLists.txt.
 #
+#   [LAUNCH="mpirun -np N ..." CHECKPOINTS=checkpoints/rank_0_of_N] \
 #   kill_and_resume.sh SLUICE WORK SEED KILLS CASE [RUN OPTIONS...]
+#
+# With LAUNCH every run starts through it, on several ranks: a kill is SIGKILL to every rank
+# at once (a machine lost), and CHECKPOINTS names the folder, under a run's output, whose
+# newest checkpoint times the kills and is compared at the end (the first rank's).
 #
 # Runs CASE once into WORK/whole; then into WORK/killed, killed KILLS times. The kill points
 # come from bash's generator seeded with SEED: each is a step of the whole run (drawn below
@@ -19,6 +24,8 @@ fi
 sluice=$1 work=$2 seed=$3 kills=$4 case_file=$5
 shift 5
 options=("$@")
+launch=(${LAUNCH:-})
+checkpoints=${CHECKPOINTS:-checkpoints}
 
 fail() {
   echo "FAIL: $*" >&2
@@ -27,14 +34,14 @@ fail() {
 
 rm -rf "$work"
 mkdir -p "$work"
-"$sluice" run "$case_file" --out "$work/whole" "${options[@]}" --stats "$work/whole_stats.json" \
+"${launch[@]}" "$sluice" run "$case_file" --out "$work/whole" "${options[@]}" --stats "$work/whole_stats.json" \
   >"$work/whole.log" 2>&1 ||
   fail "the run without kills failed: $(tail -n 3 "$work/whole.log")"
 
 # The step of a folder's newest checkpoint (0 if none).
 newest_step() {
   local newest
-  newest=$(ls "$1/checkpoints" 2>/dev/null | grep -E '^step_[0-9]+\.ckpt$' | sort | tail -n 1)
+  newest=$(ls "$1/$checkpoints" 2>/dev/null | grep -E '^step_[0-9]+\.ckpt$' | sort | tail -n 1)
   [ -n "$newest" ] || { echo 0; return; }
   newest=${newest#step_}
   echo $((10#${newest%.ckpt}))
@@ -56,11 +63,20 @@ segment=0
 start_run() {
   segment=$((segment + 1))
   if [ "$segment" -eq 1 ]; then
-    "$sluice" run "$case_file" --out "$work/killed" "${options[@]}" >"$work/run_$segment.log" 2>&1 &
+    "${launch[@]}" "$sluice" run "$case_file" --out "$work/killed" "${options[@]}" >"$work/run_$segment.log" 2>&1 &
   else
-    "$sluice" run "$case_file" --resume "$work/killed" "${options[@]}" >"$work/run_$segment.log" 2>&1 &
+    "${launch[@]}" "$sluice" run "$case_file" --resume "$work/killed" "${options[@]}" >"$work/run_$segment.log" 2>&1 &
   fi
   pid=$!
+}
+
+# SIGKILL to the run: to its process, or with LAUNCH to every rank (the launcher's children).
+kill_run() {
+  if [ ${#launch[@]} -eq 0 ]; then
+    kill -KILL "$pid" 2>/dev/null
+  else
+    kill -0 "$pid" 2>/dev/null && pkill -KILL -P "$pid"
+  fi
 }
 
 for target in "${targets[@]}"; do
@@ -70,7 +86,7 @@ for target in "${targets[@]}"; do
   done
   delay=$((RANDOM % 41))
   sleep "$(printf '0.%03d' "$delay")"
-  if kill -KILL "$pid" 2>/dev/null; then
+  if kill_run; then
     wait "$pid" 2>/dev/null || true
     landed=$((landed + 1))
     echo "kill $landed: at step >= $target of $total, $delay ms after (segment $segment)"
@@ -94,9 +110,9 @@ if ! diff -r --exclude=checkpoints "$work/whole" "$work/killed" >"$work/diff.txt
   fail "the killed run's output differs from the whole run's:
 $(head -n 20 "$work/diff.txt")"
 fi
-whole_last=$(ls "$work/whole/checkpoints" | sort | tail -n 1)
-killed_last=$(ls "$work/killed/checkpoints" | sort | tail -n 1)
+whole_last=$(ls "$work/whole/$checkpoints" | sort | tail -n 1)
+killed_last=$(ls "$work/killed/$checkpoints" | sort | tail -n 1)
 [ "$whole_last" = "$killed_last" ] || fail "newest checkpoints differ: $whole_last, $killed_last"
-cmp "$work/whole/checkpoints/$whole_last" "$work/killed/checkpoints/$killed_last" ||
+cmp "$work/whole/$checkpoints/$whole_last" "$work/killed/$checkpoints/$killed_last" ||
   fail "the final checkpoints differ"
 echo "PASS: $landed kills, $segment segments, output identical to the run without kills"

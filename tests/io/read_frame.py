@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Checks a ParaView .pvd series written by sluice: every listed .vtp must load in VTK's own
-reader without errors and carry the named point arrays; optionally the last frame's point count.
+"""Checks a ParaView .pvd series written by sluice: every listed .vtp (or .pvtp, a run on several
+ranks) must load in VTK's own reader without errors and carry the named point arrays; optionally the last frame's point count.
 A grid model's series (--cells): every .vti must hold N cells with the named cell arrays, and
 every .vtp must be a surface (line segments or triangles covering all its points).
 
@@ -51,14 +51,17 @@ def read_pvd(path):
 
 
 def read_xml(path):
-    """Loads one .vtp or .vti; fails on anything VTK reports as an error, from the reader or its
+    """Loads one .vtp, .pvtp or .vti; fails on anything VTK reports as an error, from the reader or its
     parser."""
     if not os.path.isfile(path):
         raise Problem(f"{path}: listed in the .pvd but missing")
     log = vtk.vtkStringOutputWindow()
     vtk.vtkOutputWindow.SetInstance(log)
     errors = []
-    reader = vtk.vtkXMLImageDataReader() if path.endswith(".vti") else vtk.vtkXMLPolyDataReader()
+    # A run on several ranks writes each frame as a .pvtp that joins the ranks' pieces.
+    reader = (vtk.vtkXMLImageDataReader() if path.endswith(".vti")
+              else vtk.vtkXMLPPolyDataReader() if path.endswith(".pvtp")
+              else vtk.vtkXMLPolyDataReader())
     reader.AddObserver("ErrorEvent", lambda obj, event: errors.append(event))
     reader.SetFileName(path)
     reader.Update()

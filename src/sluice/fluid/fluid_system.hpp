@@ -32,6 +32,8 @@ class FluidSystem {
   // The reach of the model's interactions (a particle model's support): walls are this thick,
   // and a body this far outside the domain has left it.
   virtual double interaction_radius() const = 0;
+  // How the fluid is split over the run's ranks, for the run's first line; empty on one rank.
+  virtual std::string decomposition() const { return {}; }
   // Checkpoints: writes, or reads back, everything the model carries from one step to the next
   // (core/state_archive.hpp); the model is one built from the same case.
   virtual void archive_state(StateArchive& a) = 0;

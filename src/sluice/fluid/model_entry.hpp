@@ -12,6 +12,7 @@
 #include "sluice/fluid/fluid_system.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/linear/hypre_session.hpp"
+#include "sluice/parallel/communicator.hpp"
 
 namespace sluice {
 
@@ -19,6 +20,9 @@ namespace sluice {
 // in which hypre's solvers run (null in a process without one: linear/sparse_solver.hpp).
 struct ModelServices {
   HypreSession* hypre = nullptr;
+  // The run's ranks (mpirun); none: this process alone.
+  const Communicator* ranks = nullptr;
+  bool split() const { return ranks != nullptr && ranks->split(); }
 };
 
 // Reads the model's parameters from the case (throws InputError) and builds it, ready to step.
@@ -53,6 +57,9 @@ struct ModelEntry {
   ModelSize size;
   std::vector<std::string> devices = {"cpu"};
   std::vector<std::string> schemes = {"held-loads"};
+  // Whether its particles split over several ranks (ParticleFluid::distribute); empty: it runs
+  // on one, and the reason it cannot on more (a run on several ranks is refused with it).
+  std::string one_rank_only = "it has no decomposition over ranks yet";
 };
 
 }  // namespace sluice

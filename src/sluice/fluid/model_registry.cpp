@@ -34,8 +34,15 @@ const ModelEntry* ModelRegistry::find(const std::string& name) const {
 std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                                                  const BodyGeometry& bodies,
                                                  const ModelServices& services) const {
-  if (const ModelEntry* entry = find(config.model_name))
+  if (const ModelEntry* entry = find(config.model_name)) {
+    if (services.split() && !entry->one_rank_only.empty()) {
+      throw InputError(config.file(), config.model_line, "model.name",
+                       fmt::format("the {} model runs on one rank only ({}); run it without "
+                                   "mpirun, or with -np 1",
+                                   config.model_name, entry->one_rank_only));
+    }
     return entry->make(config, bodies, services);
+  }
   io::MapReader model(config.source, config.model, "model", config.model_line);
   model.fail_choice("name", "model", config.model_name, names());
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 
 #include "sluice/core/errors.hpp"
@@ -35,12 +36,18 @@ std::vector<Vec<D>> sample_walls(const io::CaseConfig& config, int layers) {
 }
 
 template <int D>
-FluidEnergyShare<D> energy_share(const ParticleSet<D>& ps, const Vec<D>& gravity) {
+FluidEnergyShare<D> energy_share(const ParticleSet<D>& ps, const std::int32_t* kinds,
+                                 const Vec<D>& gravity) {
   static_assert(sizeof(Vec<D>) == D * sizeof(Real), "a vector is D reals in a row");
   auto reals = [](const auto& v) { return v.empty() ? nullptr : v.front().data(); };
-  return FluidEnergyShare<D>::over(ps.mass.data(), reals(ps.position), reals(ps.velocity),
-                                   reinterpret_cast<const std::int32_t*>(ps.kind.data()),
+  return FluidEnergyShare<D>::over(ps.mass.data(), reals(ps.position), reals(ps.velocity), kinds,
                                    gravity.data());
+}
+
+// The axis, of the domain's horizontal ones, along which it is longest: water spreads along it.
+int longest_horizontal_axis(const AxisBox& domain, int dimension) {
+  const Vec3 extent = domain.max - domain.min;
+  return dimension == 3 && extent[1] > extent[0] ? 1 : 0;
 }
 
 }  // namespace
@@ -151,6 +158,54 @@ void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_
 }
 
 template <int D>
+void ParticleFluid<D>::distribute(const Communicator& ranks, Real halo_depth) {
+  if (device_) throw std::logic_error("distribute: the particles live on a device");
+  ranks_ = ranks;
+  auto& ps = state_.particles;
+  owned_kind_ = ps.add_int_field({"owned_kind", "1", false});
+  const int axis = longest_horizontal_axis(state_.domain, D);
+  // The first cuts share the work as the balance counts it.
+  const BalancePolicy balance;
+  std::vector<double> coordinates(ps.size()), work(ps.size());
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    coordinates[i] = ps.position[i][axis];
+    work[i] = ps.is_fluid(i) ? 1.0 : balance.other_work;
+  }
+  exchange_ = std::make_unique<ParticleExchange<D>>(
+      ranks, balanced_slabs(coordinates, work, axis, ranks.size()), halo_depth, owned_kind_,
+      balance);
+  exchange_->start(ps);
+  state_.cells.sort(ps.position, order_);
+  ps.reorder(order_);
+}
+
+template <int D>
+std::string ParticleFluid<D>::decomposition() const {
+  if (!exchange_) return {};
+  return fmt::format("{} ranks: {}, ghosts within {:.4g} m of a slab", ranks_.size(),
+                     exchange_->slabs().describe(), exchange_->depth());
+}
+
+template <int D>
+std::vector<std::pair<std::string, double>> ParticleFluid<D>::counters() const {
+  if (!exchange_) return {};
+  const ExchangeTotals& t = exchange_->totals();
+  const double exchanges = std::max<double>(t.exchanges, 1);
+  return {{"ghosts_per_exchange", ranks_.max(t.ghosts / exchanges)},
+          {"migrated_per_exchange", ranks_.max(t.migrated / exchanges)},
+          {"migration_seconds", ranks_.max(t.migration_seconds)},
+          {"halo_seconds", ranks_.max(t.halo_seconds)},
+          {"balance_seconds", ranks_.max(t.balance_seconds)},
+          {"balances", static_cast<double>(t.balances)}};
+}
+
+template <int D>
+const std::int32_t* ParticleFluid<D>::counted_kinds() const {
+  const auto& ps = state_.particles;
+  return exchange_ ? ps[owned_kind_].data() : reinterpret_cast<const std::int32_t*>(ps.kind.data());
+}
+
+template <int D>
 void ParticleFluid<D>::run_on_device(std::unique_ptr<ParticleDevice<D>> device) {
   device_ = std::move(device);
   device_->upload(state_.particles, state_.body_point_acceleration, state_.cells.cell_starts());
@@ -182,6 +237,7 @@ template <int D>
 void ParticleFluid<D>::sort_by_cell() {
   if (device_) return on_device([&] { device_->sort_by_cell(); });
   keep_out_of_walls();
+  if (exchange_) exchange_->exchange(state_.particles);
   state_.cells.sort(state_.particles.position, order_);
   state_.particles.reorder(order_);
 }
@@ -236,16 +292,49 @@ std::vector<Wrench> ParticleFluid<D>::body_loads(const std::vector<BodyKinematic
   if (body_forces_read_particles()) refresh_host();  // a model's forces read the host's set
   std::vector<Vec3> force(body_points_.size(), Vec3::Zero());
   body_point_forces(motion, force);
-  return body_points_.loads(force, motion, body_count_);
+  if (!exchange_) return body_points_.loads(force, motion, body_count_);
+  // A point's owner alone counts its force; then the bodies' loads add up over the ranks.
+  const auto& ps = state_.particles;
+  const std::int32_t* kinds = counted_kinds();
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (ps.body_point[i] >= 0 && kinds[i] < 0) force[ps.body_point[i]] = Vec3::Zero();
+  }
+  std::vector<Wrench> loads = body_points_.loads(force, motion, body_count_);
+  std::vector<double> sums;
+  for (const Wrench& w : loads)
+    sums.insert(sums.end(),
+                {w.force[0], w.force[1], w.force[2], w.moment[0], w.moment[1], w.moment[2]});
+  ranks_.sum(sums);
+  for (std::size_t b = 0; b < loads.size(); ++b) {
+    loads[b].force = Vec3(sums[6 * b], sums[6 * b + 1], sums[6 * b + 2]);
+    loads[b].moment = Vec3(sums[6 * b + 3], sums[6 * b + 4], sums[6 * b + 5]);
+  }
+  return loads;
 }
 
 template <int D>
 FluidSize ParticleFluid<D>::size() const {
   FluidSize out;
-  out.elements = state_.particles.size();
-  out.fluid = state_.fluid_count;
-  out.body = body_points_.size();
-  out.wall = out.elements - out.fluid - out.body;
+  if (!exchange_) {
+    out.elements = state_.particles.size();
+    out.fluid = state_.fluid_count;
+    out.body = body_points_.size();
+    out.wall = out.elements - out.fluid - out.body;
+    return out;
+  }
+  refresh_host();
+  const std::int32_t* kinds = counted_kinds();
+  std::array<double, 3> count{};  // fluid, wall (dummies too), body
+  for (std::size_t i = 0; i < state_.particles.size(); ++i) {
+    const auto kind = static_cast<ParticleKind>(kinds[i]);
+    if (kinds[i] >= 0)
+      ++count[kind == ParticleKind::kFluid ? 0 : kind == ParticleKind::kBody ? 2 : 1];
+  }
+  ranks_.sum(count);
+  out.fluid = static_cast<std::size_t>(count[0]);
+  out.wall = static_cast<std::size_t>(count[1]);
+  out.body = static_cast<std::size_t>(count[2]);
+  out.elements = out.fluid + out.wall + out.body;
   return out;
 }
 
@@ -254,11 +343,20 @@ FluidEnergy ParticleFluid<D>::energy() const {
   if (device_) return device_->energy(state_.gravity.data());
   refresh_host();
   const auto& ps = state_.particles;
-  return fluid_energy(energy_share(ps, state_.gravity), [&](const FluidEnergyShare<D>& share) {
-    double sum = 0;
-    for (std::size_t i = 0; i < ps.size(); ++i) sum += share(i);
-    return sum;
-  });
+  FluidEnergy e = fluid_energy(energy_share(ps, counted_kinds(), state_.gravity),
+                               [&](const FluidEnergyShare<D>& share) {
+                                 double sum = 0;
+                                 for (std::size_t i = 0; i < ps.size(); ++i) sum += share(i);
+                                 return sum;
+                               });
+  if (exchange_) {
+    std::array<double, 3> parts{e.kinetic, e.potential, e.mass};
+    ranks_.sum(parts);
+    e.kinetic = parts[0];
+    e.potential = parts[1];
+    e.mass = parts[2];
+  }
+  return e;
 }
 
 template <int D>
@@ -268,6 +366,10 @@ void ParticleFluid<D>::archive_state(StateArchive& a) {
   state_.particles.archive_state(a);
   a(state_.body_point_acceleration);
   state_.cells.archive_state(a);
+  if (exchange_) {
+    a.section("ranks");
+    exchange_->archive_state(a);
+  }
   a.section("model");
   archive_model(a);
   if (device_ && a.reading()) {

@@ -23,6 +23,8 @@
 #include "sluice/fluid/particle_state.hpp"
 #include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/parallel/communicator.hpp"
+#include "sluice/parallel/particle_exchange.hpp"
 
 namespace sluice {
 
@@ -65,6 +67,15 @@ class ParticleFluid : public FluidSystem,
   // compiled for it: wcsph has its own device run.)
   void run_on_emulated_device();
 
+  // From here on the particles are split over `ranks` (called before initialize(), on every
+  // rank, each of which built the whole case): slabs along the domain's longest horizontal
+  // axis with an equal share of the particles each; every rank keeps its own and, as ghosts,
+  // copies of the others' within `halo_depth` of its slab, taken anew at each neighbour stage.
+  // Counts, sums, probes, loads and the check are then over the run's ranks; a frame holds
+  // this rank's own particles.
+  void distribute(const Communicator& ranks, Real halo_depth);
+  std::string decomposition() const override;
+
   // Stages: the model's first stages; then, after the bodies' advance, the engine's neighbour
   // sort and the model's other stages.
   void append_stages(StageList& before_bodies, StageList& after_bodies) override;
@@ -75,10 +86,7 @@ class ParticleFluid : public FluidSystem,
   const FluidObservation& observation() const override { return *this; }
   FluidGuard& guard() override { return *this; }
 
-  FluidView view() const override {
-    refresh_host();
-    return view_of(state_.particles);
-  }
+  FluidView view() const override;
   double pressure_at(const Vec3& x) const override;
   double water_height_at(const Vec3& gauge) const override;
   double surge_front(int axis) const override;
@@ -89,6 +97,9 @@ class ParticleFluid : public FluidSystem,
   FluidSize size() const override;
   FluidEnergy energy() const override;  // kinetic, potential and mass of the fluid
   double interaction_radius() const override { return radius_; }
+  // On several ranks: the ghosts and migrants an exchange, and the seconds of migration, halo
+  // and balance (each the largest rank's); none on one.
+  std::vector<std::pair<std::string, double>> counters() const override;
   // The particles (every field), the cells of the last sort, and then the model's own state.
   void archive_state(StateArchive& a) override;
 
@@ -141,6 +152,11 @@ class ParticleFluid : public FluidSystem,
     host_current_ = false;
   }
 
+  // The kinds that a count or a largest value over the particles reads (ParticleKind's
+  // integers): a ghost's is -1, so that only its owner counts it.
+  const std::int32_t* counted_kinds() const;
+  const Communicator& ranks() const { return ranks_; }
+
   // The neighbours stage: puts back fluid found in a wall's layers, then sorts the particle
   // set by cell.
   virtual void sort_by_cell();
@@ -176,6 +192,15 @@ class ParticleFluid : public FluidSystem,
   std::unique_ptr<ParticleDevice<D>> device_;
   ParticleDeviceRun<D, exec::HostBackend>* emulated_loops_ = nullptr;
   mutable bool host_current_ = true;
+  // With distribute(): the run's ranks and the particles' traffic between them.
+  Communicator ranks_ = Communicator::alone();
+  std::unique_ptr<ParticleExchange<D>> exchange_;
+  FieldHandle<std::int32_t> owned_kind_;
+  // Of the state's particles, those this rank owns, with the fields for which keep(label)
+  // holds (a frame, the guard's last good state).
+  ParticleSet<D> owned_particles(bool (*keep)(const FieldLabel&)) const;
+  // `problem` (empty: none) of the first rank that has one, on every rank.
+  std::optional<std::string> first_problem(const std::string& problem) const;
 };
 
 }  // namespace sluice

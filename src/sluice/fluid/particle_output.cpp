@@ -41,6 +41,20 @@ FluidView ParticleFluid<D>::view_of(const ParticleSet<D>& ps) const {
   return view;
 }
 
+template <int D>
+ParticleSet<D> ParticleFluid<D>::owned_particles(bool (*keep)(const FieldLabel&)) const {
+  const auto& ps = state_.particles;
+  ParticleSet<D> out;
+  out.assign_fields(ps, keep);
+  std::vector<std::uint32_t> own;
+  const std::int32_t* kinds = counted_kinds();
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (kinds[i] >= 0) own.push_back(static_cast<std::uint32_t>(i));
+  }
+  out.keep(own);
+  return out;
+}
+
 namespace {
 template <int D>
 ParticleCheck<D> checker(const ParticleState<D>& s) {
@@ -66,19 +80,43 @@ std::optional<std::string> ParticleFluid<D>::check(const StepClock& clock) const
   // On a device the check runs there; the host's copy names the particle.
   if (device_ && !device_->any_problem()) return std::nullopt;
   refresh_host();
-  if (state_.particles.size() == 0) return std::nullopt;
-  const ParticleCheck<D> problem_of = checker(state_);
-  // The first bad particle by index, found in parallel; the same on any thread count.
-  const double first = -exec::Default::max_of(state_.particles.size(), [&](std::size_t i) {
-    return problem_of(i) != ParticleProblem::kNone ? -static_cast<double>(i)
-                                                   : -std::numeric_limits<double>::infinity();
-  });
-  if (!std::isfinite(first)) return std::nullopt;
-  const auto i = static_cast<std::size_t>(first);
-  const Vec3 x = to_3d<D>(state_.particles.position[i]);
-  return diverged_at(clock.step, clock.time) +
-         fmt::format("particle {} at ({:.4g}, {:.4g}, {:.4g}): {}", i, x[0], x[1], x[2],
-                     particle_problem_text(problem_of(i)));
+  std::string problem;
+  if (state_.particles.size() > 0) {
+    const ParticleCheck<D> problem_of = checker(state_);
+    const std::int32_t* counted = counted_kinds();  // a ghost's owner checks it
+    // The first bad particle by index, found in parallel; the same on any thread count.
+    const double first = -exec::Default::max_of(state_.particles.size(), [&](std::size_t i) {
+      return counted[i] >= 0 && problem_of(i) != ParticleProblem::kNone
+                 ? -static_cast<double>(i)
+                 : -std::numeric_limits<double>::infinity();
+    });
+    if (!std::isfinite(first)) return first_problem(problem);
+    const auto i = static_cast<std::size_t>(first);
+    const Vec3 x = to_3d<D>(state_.particles.position[i]);
+    problem = diverged_at(clock.step, clock.time) +
+              fmt::format("particle {}{} at ({:.4g}, {:.4g}, {:.4g}): {}", i,
+                          ranks_.split() ? fmt::format(" of rank {}", ranks_.rank()) : "", x[0],
+                          x[1], x[2], particle_problem_text(problem_of(i)));
+  }
+  return first_problem(problem);
+}
+
+template <int D>
+std::optional<std::string> ParticleFluid<D>::first_problem(const std::string& problem) const {
+  // The first rank's problem, on every rank, so that all stop together.
+  const int rank = ranks_.first_rank_where(!problem.empty());
+  if (rank < 0) return std::nullopt;
+  return ranks_.broadcast(problem, rank);
+}
+
+template <int D>
+FluidView ParticleFluid<D>::view() const {
+  refresh_host();
+  if (!exchange_) return view_of(state_.particles);
+  auto own = std::make_shared<ParticleSet<D>>(owned_particles(shown_in_frames));
+  FluidView view = view_of(*own);
+  view.keeps = std::move(own);
+  return view;
 }
 
 // What a frame shows, the model's fields marked for output included.
@@ -91,7 +129,11 @@ void ParticleFluid<D>::remember_good(double time) {
     return;
   }
   refresh_host();
-  last_good_.assign_fields(state_.particles, shown_in_frames);
+  if (exchange_) {
+    last_good_ = owned_particles(shown_in_frames);
+  } else {
+    last_good_.assign_fields(state_.particles, shown_in_frames);
+  }
 }
 
 // On a device the last good state is there: the view holds the host's copy of it.
@@ -107,10 +149,12 @@ FluidView ParticleFluid<D>::last_good_view() const {
 
 // The class is instantiated in particle_fluid.cpp; these are its members defined here.
 template FluidView ParticleFluid<2>::view_of(const ParticleSet<2>&) const;
+template FluidView ParticleFluid<2>::view() const;
 template std::optional<std::string> ParticleFluid<2>::check(const StepClock&) const;
 template void ParticleFluid<2>::remember_good(double);
 template FluidView ParticleFluid<2>::last_good_view() const;
 template FluidView ParticleFluid<3>::view_of(const ParticleSet<3>&) const;
+template FluidView ParticleFluid<3>::view() const;
 template std::optional<std::string> ParticleFluid<3>::check(const StepClock&) const;
 template void ParticleFluid<3>::remember_good(double);
 template FluidView ParticleFluid<3>::last_good_view() const;

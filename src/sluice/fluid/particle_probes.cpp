@@ -1,5 +1,7 @@
 // The particle base's probe queries.
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
@@ -16,15 +18,17 @@ double ParticleFluid<D>::pressure_at(const Vec3& point) const {
   const Vec<D> x = from_3d<D>(point);
   const WendlandC2<D> kernel(radius_ / 2);
   const auto& ps = s.particles;
-  Real sum_w = 0, sum_pw = 0;
+  const std::int32_t* counted = counted_kinds();
+  std::array<double, 2> sums{};  // of the weights, and of the weighted pressures
   s.cells.for_each_near(ps.position, x, radius_ * radius_,
                         [&](std::size_t j, const Vec<D>&, Real r2) {
-                          if (!ps.is_fluid(j)) return;
+                          if (counted[j] != 0) return;  // fluid this rank owns
                           const Real w = kernel.value(std::sqrt(r2)) * ps.mass[j] / ps.density[j];
-                          sum_w += w;
-                          sum_pw += w * ps.pressure[j];
+                          sums[0] += w;
+                          sums[1] += w * ps.pressure[j];
                         });
-  return sum_w > 0 ? sum_pw / sum_w : 0;
+  ranks_.sum(sums);
+  return sums[0] > 0 ? sums[1] / sums[0] : 0;
 }
 
 // Height above the domain floor of the highest point of the gauge line where the fluid's
@@ -37,16 +41,23 @@ double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
   const auto& ps = s.particles;
   const Real floor = s.domain.min[2];
   const Real step = 0.25 * s.spacing;
-  Real height = 0;
+  const std::int32_t* counted = counted_kinds();
+  std::vector<double> heights, fractions;
   for (Real z = floor; z <= s.domain.max[2]; z += step) {
     const Vec<D> x = from_3d<D>(Vec3(gauge[0], gauge[1], z));
-    Real fraction = 0;
+    double fraction = 0;
     s.cells.for_each_near(ps.position, x, radius_ * radius_,
                           [&](std::size_t j, const Vec<D>&, Real r2) {
-                            if (ps.is_fluid(j))
+                            if (counted[j] == 0)  // fluid this rank owns
                               fraction += kernel.value(std::sqrt(r2)) * ps.mass[j] / ps.density[j];
                           });
-    if (fraction >= 0.5) height = z - floor;
+    heights.push_back(z - floor);
+    fractions.push_back(fraction);
+  }
+  ranks_.sum(fractions);
+  double height = 0;
+  for (std::size_t k = 0; k < heights.size(); ++k) {
+    if (fractions[k] >= 0.5) height = heights[k];
   }
   return height;
 }
@@ -58,9 +69,10 @@ double ParticleFluid<D>::surge_front(int axis3) const {
   const ParticleState<D>& s = state_;
   const int axis = (D == 2 && axis3 == 0) ? 0 : axis3;
   const auto& ps = s.particles;
+  const std::int32_t* counted = counted_kinds();
   const Real front = exec::Default::max_of(
-      ps.size(), [&](std::size_t i) { return ps.is_fluid(i) ? ps.position[i][axis] : -1e300; });
-  return front + 0.5 * s.spacing;
+      ps.size(), [&](std::size_t i) { return counted[i] == 0 ? ps.position[i][axis] : -1e300; });
+  return ranks_.max(front) + 0.5 * s.spacing;
 }
 
 // The class is instantiated in particle_fluid.cpp; these are its members defined here.

@@ -182,6 +182,33 @@ void write_vtp(const std::string& path, const PolyFrame& frame) {
   out.commit();
 }
 
+void write_pvtp(const std::string& path, const PolyFrame& like,
+                const std::vector<std::string>& pieces) {
+  std::string xml =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n"
+      "  <PPolyData GhostLevel=\"0\">\n"
+      "    <PPointData>\n";
+  for (const PointArrayF32& array : like.float_arrays) {
+    xml +=
+        fmt::format("      <PDataArray type=\"Float32\" Name=\"{}\" NumberOfComponents=\"{}\"/>\n",
+                    xml_escape(array.name), array.components);
+  }
+  for (const PointArrayI32& array : like.int_arrays) {
+    xml += fmt::format("      <PDataArray type=\"Int32\" Name=\"{}\"/>\n", xml_escape(array.name));
+  }
+  xml +=
+      "    </PPointData>\n"
+      "    <PPoints>\n"
+      "      <PDataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+      "    </PPoints>\n";
+  for (const std::string& piece : pieces)
+    xml += fmt::format("    <Piece Source=\"{}\"/>\n", xml_escape(piece));
+  xml += "  </PPolyData>\n</VTKFile>\n";
+  write_file_atomically(path, xml);
+}
+
 void write_vti(const std::string& path, const ImageFrame& frame) {
   size_t n = 1;
   for (const int c : frame.cells) {

@@ -57,6 +57,12 @@ struct FluidFrame {
 // std::runtime_error naming the path and the system error if the file cannot be written.
 void write_vtp(const std::string& path, const PolyFrame& frame);
 
+// Writes a .pvtp (ParaView's parallel PolyData) that joins the .vtp `pieces` (paths relative to
+// it), each written by write_vtp with the arrays of `like` (their values are not read).
+// Throws std::runtime_error as write_vtp does.
+void write_pvtp(const std::string& path, const PolyFrame& like,
+                const std::vector<std::string>& pieces);
+
 // Writes `frame` as a .vti (ImageData) with raw appended data and the arrays as CellData.
 // Throws as write_vtp does.
 void write_vti(const std::string& path, const ImageFrame& frame);

@@ -144,6 +144,9 @@ class ParticleSet {
 
   // Applies a permutation to every field: after it, particle k is the one that was order[k].
   void reorder(const std::vector<std::uint32_t>& order);
+  // Keeps the particles `which` alone, in that order (a rank's own after a migration); a field
+  // that assign_fields left empty stays empty.
+  void keep(const std::vector<std::uint32_t>& which);
 
   // Checkpoints: every field, each under its name.
   void archive_state(StateArchive& a) {

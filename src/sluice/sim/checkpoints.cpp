@@ -32,8 +32,10 @@ long long step_of(const std::string& name) {
 
 }  // namespace
 
-CheckpointFolder::CheckpointFolder(const std::string& out_dir)
-    : folder_(out_dir + "/checkpoints") {}
+CheckpointFolder::CheckpointFolder(const std::string& out_dir, const Communicator& ranks)
+    : root_(out_dir + "/checkpoints"),
+      folder_(root_ +
+              (ranks.split() ? fmt::format("/rank_{}_of_{}", ranks.rank(), ranks.size()) : "")) {}
 
 std::vector<std::string> CheckpointFolder::files() const {
   std::vector<std::pair<long long, std::string>> found;
@@ -50,7 +52,11 @@ std::vector<std::string> CheckpointFolder::files() const {
 
 void CheckpointFolder::clear() const {
   std::error_code error;
-  for (const std::string& path : files()) fs::remove(path, error);
+  for (const auto& entry : fs::directory_iterator(root_, error)) {
+    const std::string name = entry.path().filename().string();
+    if (step_of(name) >= 0) fs::remove(entry.path(), error);
+    if (entry.is_directory() && name.rfind("rank_", 0) == 0) fs::remove_all(entry.path(), error);
+  }
 }
 
 void CheckpointFolder::write(const io::CheckpointHeader& header, std::string_view state) const {

@@ -10,6 +10,7 @@
 
 #include "sluice/io/case_config.hpp"
 #include "sluice/io/checkpoint_file.hpp"
+#include "sluice/parallel/communicator.hpp"
 
 namespace sluice {
 
@@ -18,7 +19,9 @@ inline constexpr std::size_t kCheckpointsKept = 2;
 
 class CheckpointFolder {
  public:
-  explicit CheckpointFolder(const std::string& out_dir);
+  // OUT/checkpoints; on several ranks, each rank's OUT/checkpoints/rank_R_of_N (a run resumes
+  // on as many ranks as wrote it).
+  explicit CheckpointFolder(const std::string& out_dir, const Communicator& ranks = {});
 
   const std::string& path() const { return folder_; }
   // Writes the checkpoint of `header.step` atomically, then removes all but the newest
@@ -26,11 +29,12 @@ class CheckpointFolder {
   void write(const io::CheckpointHeader& header, std::string_view state) const;
   // The checkpoint files, newest (highest step) first.
   std::vector<std::string> files() const;
-  // Removes every checkpoint: a new run into the folder must not leave an older run's to be
-  // resumed (or to outrank its own).
+  // Removes every checkpoint, every rank's too: a new run into the folder must not leave an
+  // older run's to be resumed (or to outrank its own). The first rank alone calls it.
   void clear() const;
 
  private:
+  std::string root_;  // OUT/checkpoints
   std::string folder_;
 };
 

@@ -12,8 +12,10 @@
 
 namespace sluice {
 
-FrameOutput::FrameOutput(const std::string& out_dir, const std::string& case_name)
-    : out_dir_(out_dir), series_(out_dir + "/" + case_name + ".pvd") {
+FrameOutput::FrameOutput(const std::string& out_dir, const std::string& case_name,
+                         const Communicator& ranks)
+    : out_dir_(out_dir), series_path_(out_dir + "/" + case_name + ".pvd"), ranks_(ranks) {
+  if (ranks.rank() == 0) series_.emplace(series_path_);
   std::error_code error;
   std::filesystem::create_directories(out_dir + "/frames", error);
   if (error) {
@@ -71,13 +73,28 @@ io::FluidFrame frame_of(const FluidView& view) {
 
 void FrameOutput::write(const FluidView& view, double time) {
   const io::FluidFrame frame = frame_of(view);
-  std::vector<std::string> names{fmt::format("frames/frame_{:06d}.vtp", frame_count_)};
-  io::write_vtp(out_dir_ + "/" + names[0], frame.points);
-  if (frame.grid) {
-    names.push_back(fmt::format("frames/grid_{:06d}.vti", frame_count_));
-    io::write_vti(out_dir_ + "/" + names[1], *frame.grid);
+  std::vector<std::string> names;
+  if (ranks_.split()) {
+    // Each rank writes its own particles; the first joins the pieces in a .pvtp.
+    const auto piece = [&](int rank) {
+      return fmt::format("frame_{:06d}_rank_{}.vtp", frame_count_, rank);
+    };
+    io::write_vtp(out_dir_ + "/frames/" + piece(ranks_.rank()), frame.points);
+    names.push_back(fmt::format("frames/frame_{:06d}.pvtp", frame_count_));
+    if (ranks_.rank() == 0) {
+      std::vector<std::string> pieces;
+      for (int r = 0; r < ranks_.size(); ++r) pieces.push_back(piece(r));
+      io::write_pvtp(out_dir_ + "/" + names[0], frame.points, pieces);
+    }
+  } else {
+    names.push_back(fmt::format("frames/frame_{:06d}.vtp", frame_count_));
+    io::write_vtp(out_dir_ + "/" + names[0], frame.points);
+    if (frame.grid) {
+      names.push_back(fmt::format("frames/grid_{:06d}.vti", frame_count_));
+      io::write_vti(out_dir_ + "/" + names[1], *frame.grid);
+    }
   }
-  series_.add(time, names);
+  if (series_) series_->add(time, names);
   ++frame_count_;
 }
 

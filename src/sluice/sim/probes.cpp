@@ -38,9 +38,12 @@ std::vector<double> Probes::measure(const FluidObservation& fluid) const {
 }
 
 void Probes::record(double time, const FluidObservation& fluid) {
+  if (probes_.empty()) return;
+  // Measured on every rank (the readings add up over them), written where the file is.
+  const std::vector<double> values = measure(fluid);
   if (!csv_) return;
   std::vector<double> row{time};
-  for (double v : measure(fluid)) row.push_back(v);
+  row.insert(row.end(), values.begin(), values.end());
   csv_->row(row);
 }
 

@@ -47,15 +47,17 @@ struct RunSchedule {
 
 // A whole run's state, the simulation first: a checkpoint that does not fit the case fails
 // there, before the output files are touched (reading back cuts them to the checkpoint).
+// On several ranks each writes its own; the files of probes and bodies are the first rank's
+// (body_output null on the others).
 template <int D>
 void archive_run(StateArchive& a, RunSchedule& schedule, Simulation<D>& sim, FrameOutput& frames,
-                 Probes& probes, BodyOutput& body_output) {
+                 Probes& probes, BodyOutput* body_output) {
   schedule.archive_state(a);
   sim.archive_state(a);
   frames.archive_state(a);
   a.section("probes");
   probes.archive_state(a);
-  body_output.archive_state(a);
+  if (body_output != nullptr) body_output->archive_state(a);
 }
 
 template <int D>
@@ -64,17 +66,27 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // must leave no directory behind; and nothing is allocated for a case that cannot fit.
   const SizeEstimate estimate = estimate_size(config);
   refuse_if_it_cannot_fit_here(config, estimate);
-  Simulation<D> sim(config, ModelServices{options.hypre});
+  // On several ranks every rank runs this, in step; the first writes the shared files and
+  // speaks.
+  const Communicator ranks = options.ranks != nullptr ? *options.ranks : Communicator();
+  const bool first_rank = ranks.rank() == 0;
+  const bool quiet = options.quiet || !first_rank;
+  Simulation<D> sim(config, ModelServices{options.hypre, &ranks});
   const double end_time = options.end_time.value_or(config.end_time);
   const std::string model = config.has_fluid() ? config.model_name : "bodies-alone";
-  const CheckpointFolder checkpoint_folder(options.out_dir);
+  const CheckpointFolder checkpoint_folder(options.out_dir, ranks);
   const io::CheckpointHeader identity = checkpoint_header(config, D);
   std::optional<io::Checkpoint> resumed;
   RunSchedule schedule;
   if (options.resume) {
     resumed = newest_checkpoint(checkpoint_folder, identity, [&](const std::string& warning) {
-      if (!options.quiet) fmt::print(stderr, "warning: {}\n", warning);
+      if (!options.quiet) fmt::print(stderr, "warning: {}\n", warning);  // each rank's own
     });
+    if (ranks.min(double(resumed->header.step)) != ranks.max(double(resumed->header.step))) {
+      throw InputError(checkpoint_folder.path(), 0, "",
+                       "the ranks' newest whole checkpoints are of different steps: resume "
+                       "from an earlier one (remove the newer files)");
+    }
     if (resumed->header.time >= end_time * (1 - 1e-12)) {
       throw InputError(checkpoint_folder.path(), 0, "",
                        fmt::format("the run already reached t = {:.6g} s, its end time is {:.6g} "
@@ -90,16 +102,18 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     schedule.first_limit = first.limit;
   }
   const io::CsvStart start = resumed ? io::CsvStart::kContinue : io::CsvStart::kNew;
-  FrameOutput frames(options.out_dir, config.name);
+  FrameOutput frames(options.out_dir, config.name, ranks);
   std::optional<BodyOutput> body_output;
   std::optional<Probes> probes;
   try {
-    body_output.emplace(options.out_dir, sim.bodies(), config.travel_direction, config.gravity, D,
-                        start);
-    probes.emplace(config.probes, options.out_dir + "/probes.csv", start);
+    if (first_rank) {
+      body_output.emplace(options.out_dir, sim.bodies(), config.travel_direction, config.gravity, D,
+                          start);
+    }
+    probes.emplace(config.probes, first_rank ? options.out_dir + "/probes.csv" : "", start);
     if (resumed) {
       StateArchive archive(resumed->state);
-      archive_run(archive, schedule, sim, frames, *probes, *body_output);
+      archive_run(archive, schedule, sim, frames, *probes, body_output ? &*body_output : nullptr);
       archive.finish();
     }
   } catch (const StateArchiveError& e) {
@@ -116,19 +130,25 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   DivergenceGuard guard(escape_box, D);
 
   RunSummary summary;
-  summary.particles = fluid.size().elements;
-  summary.element_name = fluid.size().element_name;
-  summary.fluid_particles = fluid.size().fluid;
+  const FluidSize size = fluid.size();  // over the ranks: every rank asks
+  summary.particles = size.elements;
+  summary.element_name = size.element_name;
+  summary.fluid_particles = size.fluid;
   summary.threads = exec::thread_count();
   summary.series_path = frames.series_path();
   summary.bodies = sim.bodies().count();
   summary.start_time = sim.time();
   const long first_step = sim.clock().step;
   const long first_substeps = sim.bodies().substeps();
-  if (!options.quiet) {
-    fmt::print(stderr, "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads\n  {}\n",
-               config.name, D, summary.particles, fluid.size().element_name,
-               summary.fluid_particles, summary.bodies, summary.threads, sim.fluid().describe());
+  summary.ranks = ranks.size();
+  const std::string decomposition = sim.fluid().decomposition();
+  if (!quiet) {
+    fmt::print(stderr, "sluice: {} ({}D): {} {} ({} fluid), {} bodies, {} threads{}\n  {}\n",
+               config.name, D, summary.particles, size.element_name, summary.fluid_particles,
+               summary.bodies, summary.threads,
+               ranks.split() ? fmt::format(" on each of {} ranks", ranks.size()) : "",
+               sim.fluid().describe());
+    if (!decomposition.empty()) fmt::print(stderr, "  {}\n", decomposition);
     if (resumed) {
       fmt::print(stderr, "  resuming from {} at t = {:.6g} s (step {}) to t = {:.6g} s\n",
                  resumed->path, sim.time(), first_step, end_time);
@@ -145,12 +165,17 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   const std::size_t guard_slot = timers.slot("guard");
   const std::size_t checkpoint_slot = timers.slot("checkpoint");
   const bool checkpointing = config.checkpoint_interval > 0;
+  // The fluid's energy is a sum over the ranks: every rank works it out, the first writes it.
+  const auto record_bodies = [&](double t) {
+    const FluidEnergy energy = fluid.energy();
+    if (body_output) body_output->record(t, sim.bodies(), sim.coupler(), energy);
+  };
   if (!resumed) {
-    checkpoint_folder.clear();
+    if (first_rank) checkpoint_folder.clear();
     timers.time(output_slot, [&] {
       frames.write(fluid.view(), sim.time());
       probes->record(sim.time(), fluid);
-      body_output->record(sim.time(), sim.bodies(), sim.coupler(), fluid.energy());
+      record_bodies(sim.time());
     });
     schedule.next_output = next_multiple(0, config.output_interval);
     schedule.next_probe = probes->empty() ? std::numeric_limits<double>::infinity()
@@ -162,7 +187,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   const auto write_checkpoint = [&] {
     timers.time(checkpoint_slot, [&] {
       StateArchive archive;
-      archive_run(archive, schedule, sim, frames, *probes, *body_output);
+      archive_run(archive, schedule, sim, frames, *probes, body_output ? &*body_output : nullptr);
       io::CheckpointHeader header = identity;
       header.time = sim.time();
       header.step = sim.clock().step;
@@ -171,7 +196,8 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     ++summary.checkpoints;
   };
 
-  ProgressReporter progress(end_time, stderr, options.live_progress, 10.0, sim.time());
+  ProgressReporter progress(end_time, stderr, options.live_progress && first_rank, 10.0,
+                            sim.time());
   const auto start_wall = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_wall).count();
@@ -183,7 +209,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     const double before = sim.time();
     sim.step(until);
     const double t = sim.time();
-    body_output->accumulate(t - before, sim.bodies(), sim.coupler());
+    if (body_output) body_output->accumulate(t - before, sim.bodies(), sim.coupler());
     std::optional<std::string> problem;
     timers.time(guard_slot, [&] {
       problem = guard.check(sim.clock(), fluid_guard, sim.bodies());
@@ -197,7 +223,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     });
     if (problem) {
       frames.write(fluid_guard.last_good_view(), fluid_guard.last_good_time());
-      if (!options.quiet) progress.finish();
+      if (!quiet) progress.finish();
       throw DivergenceError(
           *problem + fmt::format("; the last good state (t = {:.6g} s) is the last frame of {}",
                                  fluid_guard.last_good_time(), frames.series_path()));
@@ -209,7 +235,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
         schedule.next_probe = next_multiple(t, config.probe_interval);
       }
       if (t >= schedule.next_body * (1 - 1e-12) || at_end) {
-        body_output->record(t, sim.bodies(), sim.coupler(), fluid.energy());
+        record_bodies(t);
         schedule.next_body = next_multiple(t, config.body_interval);
       }
       if (t >= schedule.next_output * (1 - 1e-12) || at_end) {
@@ -223,13 +249,13 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
       schedule.next_checkpoint = next_multiple(t, config.checkpoint_interval);
       write_checkpoint();
     }
-    if (!options.quiet) {
+    if (!quiet) {
       const double wall = elapsed();
       const long steps = sim.clock().step - first_step;
       progress.update(t, sim.clock().step, wall > 0 ? double(summary.particles) * steps / wall : 0);
     }
   }
-  if (!options.quiet) progress.finish();
+  if (!quiet) progress.finish();
 
   summary.steps = sim.clock().step - first_step;
   summary.last_step = sim.clock().step;
@@ -274,7 +300,8 @@ CheckSummary check(const io::CaseConfig& config) {
 
 RunSummary run_case(const io::CaseConfig& config, const RunOptions& options) {
   RunSummary summary = config.dimension == 2 ? run<2>(config, options) : run<3>(config, options);
-  if (!options.stats_path.empty())
+  const bool first_rank = options.ranks == nullptr || options.ranks->rank() == 0;
+  if (!options.stats_path.empty() && first_rank)
     io::write_file_atomically(options.stats_path, stats_json(summary));
   return summary;
 }
@@ -311,7 +338,7 @@ std::string stats_json(const RunSummary& r) {
       "{{\n  \"element_name\": \"{}\",\n  \"particles\": {},\n  \"fluid_particles\": {},\n"
       "  \"steps\": {},\n  \"last_step\": {},\n"
       "  \"simulated_seconds\": {:.9g},\n  \"start_seconds\": {:.9g},\n"
-      "  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n"
+      "  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n  \"ranks\": {},\n"
       "  \"particle_steps_per_second\": {:.6g},\n  \"fluid_particle_steps_per_second\": {:.6g},\n"
       "  \"wall_seconds_per_simulated_second\": {:.6g},\n  \"frames\": {},\n"
       "  \"checkpoints\": {},\n"
@@ -321,7 +348,7 @@ std::string stats_json(const RunSummary& r) {
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
       r.element_name, r.particles, r.fluid_particles, r.steps, r.last_step, r.simulated_time,
-      r.start_time, r.wall_seconds, r.threads, r.particle_steps_per_second(), fluid_rate,
+      r.start_time, r.wall_seconds, r.threads, r.ranks, r.particle_steps_per_second(), fluid_rate,
       r.simulated_time > r.start_time ? r.wall_seconds / (r.simulated_time - r.start_time) : 0,
       r.frames, r.checkpoints, r.bodies, r.solid_substeps,
       r.steps > 0 ? double(r.solid_substeps) / r.steps : 0, r.most_substeps_per_step,

@@ -11,6 +11,7 @@
 namespace sluice {
 
 class HypreSession;  // linear/hypre_session.hpp
+class Communicator;  // parallel/communicator.hpp
 
 struct RunOptions {
   std::string out_dir;             // created if missing
@@ -23,6 +24,8 @@ struct RunOptions {
   // The process's MPI and hypre, for a model whose pressure solver is hypre's; without it
   // that solver cannot solve.
   HypreSession* hypre = nullptr;
+  // The run's ranks (mpirun -np N); null: this process alone. Every rank calls run_case.
+  const Communicator* ranks = nullptr;
 };
 
 struct RunSummary {
@@ -36,7 +39,8 @@ struct RunSummary {
   int checkpoints = 0;    // written by this run
   double wall_seconds = 0;
   int frames = 0;
-  int threads = 1;
+  int threads = 1;  // on each rank
+  int ranks = 1;
   std::vector<StageTimers::Entry> stages;
   std::string series_path;
   std::size_t bodies = 0;

@@ -1,13 +1,16 @@
 #include "sluice/sim/simulation.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace sluice {
 
 template <int D>
 Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& models,
                           const ModelServices& services)
-    : config_(models.prepared(config)),
+    : ranks_(services.ranks != nullptr ? *services.ranks : Communicator::alone()),
+      config_(models.prepared(config)),
       bodies_(std::make_unique<RigidBodies>(config_)),
       fluid_(make_fluid_system<D>(config_, *bodies_, models, services)),
       coupler_(bodies_->system(), bodies_->count(), &fluid_->exchange(), config.contact.subcycling,
@@ -21,11 +24,24 @@ Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& mod
 
 template <int D>
 TimeStep Simulation<D>::next_time_step() {
-  if (has_model()) return coupler_.time_step(fluid_->next_time_step());
+  if (has_model()) return agreed(coupler_.time_step(fluid_->next_time_step()));
   // Bodies alone: the multibody system sub-cycles within this step as contacts require.
   TimeStep step;
   step.tighten(std::min({config_.output_interval, config_.body_interval, 1e-3}),
                "the output intervals (bodies alone sub-cycle within a step)");
+  return step;
+}
+
+template <int D>
+TimeStep Simulation<D>::agreed(TimeStep step) {
+  if (!ranks_.split()) return step;
+  // A NaN step (a rank gone wrong) is the smallest, so that its limit names the culprit.
+  const double key = std::isnan(step.dt) ? -std::numeric_limits<double>::infinity() : step.dt;
+  const double smallest = ranks_.min(key);
+  limit_ = ranks_.broadcast(step.limit, ranks_.first_rank_where(key == smallest));
+  step.dt =
+      std::isinf(smallest) && smallest < 0 ? std::numeric_limits<double>::quiet_NaN() : smallest;
+  step.limit = limit_.c_str();
   return step;
 }
 

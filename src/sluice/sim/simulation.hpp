@@ -11,6 +11,7 @@
 #include "sluice/fluid/fluid_system.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/models/shipped_models.hpp"
+#include "sluice/parallel/communicator.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace sluice {
@@ -47,8 +48,14 @@ class Simulation {
 
   // Checkpoints: the clock, the bodies, the coupling and the fluid, written or read back.
   void archive_state(StateArchive& a);
+  const Communicator& ranks() const { return ranks_; }
 
  private:
+  // The smallest of the ranks' steps, and its limit, on every rank.
+  TimeStep agreed(TimeStep step);
+
+  Communicator ranks_;
+  std::string limit_;  // agreed()'s limit
   io::CaseConfig config_;
   std::unique_ptr<RigidBodies> bodies_;
   std::unique_ptr<FluidSystem> fluid_;

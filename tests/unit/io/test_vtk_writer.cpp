@@ -119,6 +119,31 @@ TEST_F(IoWriterTest, MismatchedArraySizeThrows) {
   EXPECT_FALSE(fs::exists(path("frame.vtp")));
 }
 
+TEST_F(IoWriterTest, PvtpJoinsThePiecesWithTheirArrays) {
+  PolyFrame like;
+  like.points = {0, 0, 0};
+  like.float_arrays.push_back({"velocity", 3, {1, 2, 3}});
+  like.int_arrays.push_back({"kind", {0}});
+  write_pvtp(path("f.pvtp"), like, {"f_rank_0.vtp", "f_rank_1.vtp"});
+  EXPECT_EQ(slurp(path("f.pvtp")),
+            "<?xml version=\"1.0\"?>\n"
+            "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+            "header_type=\"UInt64\">\n"
+            "  <PPolyData GhostLevel=\"0\">\n"
+            "    <PPointData>\n"
+            "      <PDataArray type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\"/>\n"
+            "      <PDataArray type=\"Int32\" Name=\"kind\"/>\n"
+            "    </PPointData>\n"
+            "    <PPoints>\n"
+            "      <PDataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+            "    </PPoints>\n"
+            "    <Piece Source=\"f_rank_0.vtp\"/>\n"
+            "    <Piece Source=\"f_rank_1.vtp\"/>\n"
+            "  </PPolyData>\n"
+            "</VTKFile>\n");
+  EXPECT_FALSE(has_tmp_file());
+}
+
 TEST_F(IoWriterTest, PvdListsEveryAddedFrame) {
   PvdSeries series(path("series.pvd"));
   EXPECT_EQ(series.path(), path("series.pvd"));

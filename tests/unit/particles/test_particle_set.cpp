@@ -67,6 +67,21 @@ TEST(ParticleSet, ReorderKeepsEveryField) {
                                             "kind", "body_point", "cluster", "phi", "gradient"}));
 }
 
+TEST(ParticleSet, KeepHoldsThoseNamedInTheirOrderAndLeavesEmptiedFieldsEmpty) {
+  const ParticleSet<3> from = tagged_set();
+  ParticleSet<3> kept;
+  kept.assign_fields(from, [](const FieldLabel& label) { return label.name != "mass"; });
+  const std::vector<std::uint32_t> which{7, 2, 11};
+  kept.keep(which);
+  ASSERT_EQ(kept.size(), which.size());
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    EXPECT_EQ(kept.position[k], from.position[which[k]]);
+    EXPECT_EQ(kept.kind[k], from.kind[which[k]]);
+    EXPECT_EQ(kept.body_point[k], from.body_point[which[k]]);
+  }
+  EXPECT_TRUE(kept.mass.empty());
+}
+
 TEST(ParticleSet, NewFieldsStartAtZeroAndNewParticlesToo) {
   ParticleSet<2> ps;
   ps.add(Vec<2>(1, 2), Vec<2>::Zero(), 1000, 1, ParticleKind::kFluid);

@@ -1,5 +1,6 @@
 #include "sluice/fluid/wcsph/wcsph_factory.hpp"
 
+#include "sluice/core/errors.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/fluid/wcsph/wcsph_model.hpp"
 #include "sluice/kernels/cubic_spline.hpp"
@@ -10,23 +11,33 @@ namespace sluice {
 namespace {
 template <int D, class Kernel>
 std::unique_ptr<FluidSystem> build(const WcsphParameters& p, const io::CaseConfig& config,
-                                   const BodyGeometry& bodies) {
+                                   const BodyGeometry& bodies, const ModelServices& services) {
   auto model = std::make_unique<WcsphModel<D, Kernel>>(p, config, bodies);
+  if (services.split()) {
+    if (p.device != WcsphDevice::kCpu) {
+      throw InputError(config.file(), config.model_line, "model.device",
+                       "a run on several ranks runs on the CPU for now (device: cpu)");
+    }
+    // A ghost wall's pressure comes from the fluid within a support of it, which a fluid
+    // particle a support inside the slab reads: two supports of ghosts. Split before the
+    // model's first rates, which it then works out over the rank's own particles and ghosts.
+    model->distribute(*services.ranks, 2 * model->interaction_radius());
+  }
   model->initialize();
   return model;
 }
 
 template <int D>
 std::unique_ptr<FluidSystem> make_wcsph(const io::CaseConfig& config, const BodyGeometry& bodies,
-                                        const ModelServices&) {
+                                        const ModelServices& services) {
   const WcsphParameters p = read_wcsph_parameters(config);
   switch (p.kernel) {
     case KernelChoice::kCubicSpline:
-      return build<D, CubicSpline<D>>(p, config, bodies);
+      return build<D, CubicSpline<D>>(p, config, bodies, services);
     case KernelChoice::kWendlandC2:
       break;
   }
-  return build<D, WendlandC2<D>>(p, config, bodies);
+  return build<D, WendlandC2<D>>(p, config, bodies, services);
 }
 
 }  // namespace
@@ -38,6 +49,7 @@ ModelEntry wcsph_entry() {
   entry.size.bytes_per_element = 500;  // measured: docs/output.md
   entry.size.device_bytes_per_element = wcsph_device_bytes_per_particle;
   entry.devices = {"cpu", "gpu", "emulated"};
+  entry.one_rank_only.clear();
   return entry;
 }
 

@@ -196,7 +196,8 @@ class WcsphModel final : public ParticleFluid<D> {
   }
 
   void measure_extremes(const ParticleState<D>& s) {
-    const WcsphFields<D> f = fields(s);
+    WcsphFields<D> f = fields(s);
+    f.kind = this->counted_kinds();  // a ghost's rates are its owner's to count
     max_speed_ = exec::Default::max_of(s.particles.size(), FluidMagnitude<D>{f, f.velocity});
     max_acceleration_ =
         exec::Default::max_of(s.particles.size(), FluidMagnitude<D>{f, f.acceleration});

@@ -1,0 +1,213 @@
+#include "sluice/parallel/communicator.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+
+#ifdef SLUICE_WITH_MPI
+#include <mpi.h>
+#endif
+
+namespace sluice {
+
+namespace {
+#ifdef SLUICE_WITH_MPI
+// OpenMPI's launcher (and PMIx's) tell a process it is one of several through its environment.
+bool started_by_mpirun() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"}) {
+    if (std::getenv(name) != nullptr) return true;
+  }
+  return false;
+}
+
+bool mpi_running() {
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  return initialized && !finalized;
+}
+
+void check(int code, const char* what) {
+  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+int as_count(std::size_t bytes) {
+  if (bytes > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::runtime_error("MPI: a message of over 2 GiB; run on more ranks");
+  return static_cast<int>(bytes);
+}
+#endif
+}  // namespace
+
+MpiSession::MpiSession() {
+#ifdef SLUICE_WITH_MPI
+  if (started_by_mpirun() && !mpi_running()) {
+    // Threads (OpenMP) run between MPI calls, never in them.
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+    started_here_ = true;
+  }
+#endif
+}
+
+MpiSession::~MpiSession() {
+#ifdef SLUICE_WITH_MPI
+  if (started_here_ && mpi_running()) MPI_Finalize();
+#endif
+}
+
+Communicator Communicator::world() {
+#ifdef SLUICE_WITH_MPI
+  if (mpi_running()) {
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    return Communicator(rank, size);
+  }
+#endif
+  return alone();
+}
+
+#ifdef SLUICE_WITH_MPI
+namespace {
+double reduce(double value, MPI_Op op) {
+  double out = value;
+  check(MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, op, MPI_COMM_WORLD), "a reduction");
+  return out;
+}
+void reduce(std::span<double> values, MPI_Op op) {
+  if (values.empty()) return;
+  check(MPI_Allreduce(MPI_IN_PLACE, values.data(), as_count(values.size()), MPI_DOUBLE, op,
+                      MPI_COMM_WORLD),
+        "a reduction");
+}
+}  // namespace
+#endif
+
+double Communicator::min(double value) const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) return reduce(value, MPI_MIN);
+#endif
+  return value;
+}
+
+double Communicator::max(double value) const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) return reduce(value, MPI_MAX);
+#endif
+  return value;
+}
+
+double Communicator::sum(double value) const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) return reduce(value, MPI_SUM);
+#endif
+  return value;
+}
+
+void Communicator::sum(std::span<double> values) const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) reduce(values, MPI_SUM);
+#else
+  (void)values;
+#endif
+}
+
+void Communicator::max(std::span<double> values) const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) reduce(values, MPI_MAX);
+#else
+  (void)values;
+#endif
+}
+
+int Communicator::first_rank_where(bool holds) const {
+  const double mine = holds ? rank_ : std::numeric_limits<double>::infinity();
+  const double first = min(mine);
+  return first == std::numeric_limits<double>::infinity() ? -1 : static_cast<int>(first);
+}
+
+std::string Communicator::broadcast(const std::string& text, int root) const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) {
+    std::uint64_t length = text.size();
+    check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, MPI_COMM_WORLD), "a broadcast");
+    std::string out = rank_ == root ? text : std::string(length, '\0');
+    check(MPI_Bcast(out.data(), as_count(length), MPI_CHAR, root, MPI_COMM_WORLD), "a broadcast");
+    return out;
+  }
+#endif
+  (void)root;
+  return text;
+}
+
+std::vector<std::vector<unsigned char>> Communicator::exchange(
+    const std::vector<std::vector<unsigned char>>& outgoing) const {
+  if (outgoing.size() != static_cast<std::size_t>(size_))
+    throw std::logic_error("Communicator::exchange: one outgoing buffer per rank");
+  if (!split()) return outgoing;
+#ifdef SLUICE_WITH_MPI
+  const auto n = static_cast<std::size_t>(size_);
+  std::vector<int> send_counts(n), receive_counts(n), send_offsets(n), receive_offsets(n);
+  std::vector<unsigned char> send;
+  for (std::size_t r = 0; r < n; ++r) {
+    send_offsets[r] = as_count(send.size());
+    send_counts[r] = as_count(outgoing[r].size());
+    send.insert(send.end(), outgoing[r].begin(), outgoing[r].end());
+  }
+  check(MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT,
+                     MPI_COMM_WORLD),
+        "the exchange's counts");
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < n; ++r) {
+    receive_offsets[r] = as_count(total);
+    total += static_cast<std::size_t>(receive_counts[r]);
+  }
+  std::vector<unsigned char> received(total);
+  check(
+      MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_BYTE, received.data(),
+                    receive_counts.data(), receive_offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
+      "the exchange");
+  std::vector<std::vector<unsigned char>> incoming(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    const auto begin = received.begin() + receive_offsets[r];
+    incoming[r].assign(begin, begin + receive_counts[r]);
+  }
+  return incoming;
+#else
+  return outgoing;
+#endif
+}
+
+std::vector<double> Communicator::gather_all(std::span<const double> values) const {
+  if (!split()) return {values.begin(), values.end()};
+#ifdef SLUICE_WITH_MPI
+  const int count = as_count(values.size());
+  std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
+  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD),
+        "a gather's counts");
+  int total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    offsets[r] = total;
+    total += counts[r];
+  }
+  std::vector<double> out(static_cast<std::size_t>(total));
+  check(MPI_Allgatherv(values.data(), count, MPI_DOUBLE, out.data(), counts.data(), offsets.data(),
+                       MPI_DOUBLE, MPI_COMM_WORLD),
+        "a gather");
+  return out;
+#else
+  return {values.begin(), values.end()};
+#endif
+}
+
+void Communicator::abort(int code) const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) MPI_Abort(MPI_COMM_WORLD, code);
+#else
+  (void)code;
+#endif
+}
+
+}  // namespace sluice

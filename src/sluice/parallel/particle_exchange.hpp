@@ -1,0 +1,232 @@
+// The particles' traffic between ranks at each step's neighbour stage, in the shape of Cabana's
+// distributor and halo plans: the ghosts of the last step go; the particles that left this
+// rank's slab go to the rank whose slab they entered (migration); then every rank whose slab
+// comes within the halo's depth of a particle gets a copy of it, a ghost, which the model reads
+// as a neighbour and never counts (its `owned_kind` is -1). Every field travels, the model's own
+// too, so a ghost is its owner's particle as the neighbour stage found it.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "sluice/core/state_archive.hpp"
+#include "sluice/parallel/communicator.hpp"
+#include "sluice/parallel/slab_decomposition.hpp"
+#include "sluice/particles/particle_set.hpp"
+
+namespace sluice {
+
+// What the last exchange moved.
+struct ExchangeCounts {
+  std::size_t sent = 0;      // particles that left for another rank
+  std::size_t received = 0;  // and those that came in
+  std::size_t ghosts = 0;    // copies of other ranks' particles now held
+};
+
+// What the exchanges took over a run, on this rank.
+struct ExchangeTotals {
+  long exchanges = 0;
+  double migrated = 0, ghosts = 0;  // particles, summed over the exchanges
+  double migration_seconds = 0, halo_seconds = 0, balance_seconds = 0;
+  int balances = 0;  // the times the cuts moved
+};
+
+// Shift balancing (LAMMPS's `balance shift`, on counted work): every `interval` exchanges the
+// ranks compare their work, and where the busiest has more than `tolerance` times the mean the
+// cuts move to where each slab holds an equal share of it. A particle's work is counted, not
+// timed, so that a run (and a resumed one) takes the same cuts on any machine: a fluid
+// particle's is 1, any other's `other_work` (its loops are a wall's extrapolation or nothing).
+struct BalancePolicy {
+  int interval = 50;
+  double tolerance = 1.1;
+  double other_work = 0.1;
+  int bins_per_rank = 64;  // the histogram of work along the axis the cuts are placed on
+};
+
+template <int D>
+class ParticleExchange {
+ public:
+  // `owned_kind` is a field of the set: a particle's kind where this rank owns it, -1 for a
+  // ghost.
+  ParticleExchange(Communicator ranks, SlabDecomposition slabs, Real halo_depth,
+                   FieldHandle<std::int32_t> owned_kind, BalancePolicy balance = {})
+      : ranks_(ranks),
+        slabs_(std::move(slabs)),
+        depth_(halo_depth),
+        owned_kind_(owned_kind),
+        balance_(balance) {}
+
+  // From the whole case, which every rank built alike: keeps this rank's slab and takes its
+  // ghosts.
+  void start(ParticleSet<D>& ps) {
+    std::vector<std::uint32_t> keep;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (slabs_.owner(ps.position[i][slabs_.axis()]) == ranks_.rank())
+        keep.push_back(static_cast<std::uint32_t>(i));
+    }
+    ps.keep(keep);
+    auto& owned = ps[owned_kind_];
+    for (std::size_t i = 0; i < ps.size(); ++i) owned[i] = static_cast<std::int32_t>(ps.kind[i]);
+    counts_ = {};
+    take_ghosts(ps);
+  }
+
+  // Drops the ghosts, moves the cuts where the work calls for it (every balance interval),
+  // migrates what left the slab, and takes the ghosts anew.
+  void exchange(ParticleSet<D>& ps) {
+    ++totals_.exchanges;
+    if (++since_balance_ >= balance_.interval) {
+      since_balance_ = 0;
+      timed(totals_.balance_seconds, [&] { balance(ps); });
+    }
+    timed(totals_.migration_seconds, [&] { migrate(ps); });
+    timed(totals_.halo_seconds, [&] { take_ghosts(ps); });
+    totals_.migrated += static_cast<double>(counts_.sent);
+    totals_.ghosts += static_cast<double>(counts_.ghosts);
+  }
+
+  const SlabDecomposition& slabs() const { return slabs_; }
+  Real depth() const { return depth_; }
+  const ExchangeCounts& last() const { return counts_; }
+  const ExchangeTotals& totals() const { return totals_; }
+
+  // Checkpoints: the cuts, where balancing has moved them, and the exchanges since the last
+  // balance.
+  void archive_state(StateArchive& a) {
+    std::vector<double> cuts = slabs_.cuts();
+    a(cuts, since_balance_);
+    if (a.reading()) slabs_ = SlabDecomposition(slabs_.axis(), std::move(cuts));
+  }
+
+ private:
+  // Sends away the particles this rank owns that left its slab, and takes in those that
+  // entered it.
+  void migrate(ParticleSet<D>& ps) {
+    const std::size_t ranks = static_cast<std::size_t>(ranks_.size());
+    std::vector<std::vector<std::uint32_t>> leaving(ranks);
+    std::vector<std::uint32_t> keep;
+    const auto& owned = ps[owned_kind_];
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (owned[i] < 0) continue;
+      const int r = slabs_.owner(ps.position[i][slabs_.axis()]);
+      (r == ranks_.rank() ? keep : leaving[static_cast<std::size_t>(r)])
+          .push_back(static_cast<std::uint32_t>(i));
+    }
+    counts_ = {};
+    for (const auto& l : leaving) counts_.sent += l.size();
+    const auto incoming = ranks_.exchange(packed(ps, leaving));
+    ps.keep(keep);
+    counts_.received = append(ps, incoming);
+  }
+
+  // The work of the particles this rank owns, or of those in each bin of [lo, hi) along the
+  // axis (`bins` non-empty).
+  double owned_work(const ParticleSet<D>& ps, double lo, double hi,
+                    std::vector<double>* bins) const {
+    const auto& owned = ps[owned_kind_];
+    double total = 0;
+    const double scale = bins ? static_cast<double>(bins->size()) / (hi - lo) : 0;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (owned[i] < 0) continue;
+      const double work = owned[i] == 0 ? 1.0 : balance_.other_work;
+      total += work;
+      if (bins) {
+        const double at = (ps.position[i][slabs_.axis()] - lo) * scale;
+        const auto k = static_cast<std::size_t>(std::clamp(at, 0.0, double(bins->size() - 1)));
+        (*bins)[k] += work;
+      }
+    }
+    return total;
+  }
+
+  // Moves the cuts to equal shares of the work where the busiest rank has more than the
+  // tolerance over the mean: the shares from a histogram of the work along the axis (summed
+  // over the ranks), each cut interpolated within its bin.
+  void balance(const ParticleSet<D>& ps) {
+    const double mine = owned_work(ps, 0, 1, nullptr);
+    const double total = ranks_.sum(mine);
+    if (!(ranks_.max(mine) > balance_.tolerance * total / ranks_.size())) return;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    const auto& owned = ps[owned_kind_];
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (owned[i] < 0) continue;
+      lo = std::min(lo, double(ps.position[i][slabs_.axis()]));
+      hi = std::max(hi, double(ps.position[i][slabs_.axis()]));
+    }
+    lo = ranks_.min(lo);
+    hi = ranks_.max(hi);
+    if (!(hi > lo)) return;
+    std::vector<double> bins(static_cast<std::size_t>(balance_.bins_per_rank * ranks_.size()));
+    owned_work(ps, lo, hi, &bins);
+    ranks_.sum(bins);
+    std::vector<double> cuts;
+    const double width = (hi - lo) / static_cast<double>(bins.size());
+    double before = 0;  // the work in the bins below bin k
+    std::size_t k = 0;
+    for (int r = 1; r < ranks_.size(); ++r) {
+      const double share = total * r / ranks_.size();
+      while (k + 1 < bins.size() && before + bins[k] < share) before += bins[k++];
+      const double into = bins[k] > 0 ? std::clamp((share - before) / bins[k], 0.0, 1.0) : 0.0;
+      cuts.push_back(lo + width * (static_cast<double>(k) + into));
+    }
+    slabs_ = SlabDecomposition(slabs_.axis(), std::move(cuts));
+    ++totals_.balances;
+  }
+
+  template <class Work>
+  static void timed(double& seconds, Work&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // Appends to the set the copies of the other ranks' particles within the halo's depth.
+  void take_ghosts(ParticleSet<D>& ps) {
+    const std::size_t owned_count = ps.size();
+    std::vector<std::vector<std::uint32_t>> copies(static_cast<std::size_t>(ranks_.size()));
+    for (std::size_t i = 0; i < owned_count; ++i) {
+      slabs_.for_each_rank_near(ps.position[i][slabs_.axis()], depth_, ranks_.rank(), [&](int r) {
+        copies[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
+      });
+    }
+    counts_.ghosts = append(ps, ranks_.exchange(packed(ps, copies)));
+    auto& owned = ps[owned_kind_];
+    for (std::size_t i = owned_count; i < ps.size(); ++i) owned[i] = -1;
+  }
+
+  std::vector<std::vector<unsigned char>> packed(
+      const ParticleSet<D>& ps, const std::vector<std::vector<std::uint32_t>>& which) const {
+    std::vector<std::vector<unsigned char>> out(which.size());
+    for (std::size_t r = 0; r < which.size(); ++r) {
+      if (!which[r].empty()) ps.pack(which[r], out[r]);
+    }
+    return out;
+  }
+
+  // Appends what each rank sent, by rank; returns how many particles that was.
+  std::size_t append(ParticleSet<D>& ps,
+                     const std::vector<std::vector<unsigned char>>& incoming) const {
+    const std::size_t bytes = ps.bytes_per_particle();
+    std::size_t count = 0;
+    for (const auto& buffer : incoming) {
+      if (buffer.empty()) continue;
+      ps.unpack_append(buffer.data(), buffer.size() / bytes);
+      count += buffer.size() / bytes;
+    }
+    return count;
+  }
+
+  Communicator ranks_;
+  SlabDecomposition slabs_;
+  Real depth_;
+  FieldHandle<std::int32_t> owned_kind_;
+  BalancePolicy balance_;
+  int since_balance_ = 0;  // exchanges since the last balance
+  ExchangeCounts counts_;
+  ExchangeTotals totals_;
+};
+
+}  // namespace sluice
