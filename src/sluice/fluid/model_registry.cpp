@@ -82,7 +82,14 @@ std::unique_ptr<FluidSystem> make_fluid_system(const io::CaseConfig& config,
                                                const BodyGeometry& bodies,
                                                const ModelRegistry& models,
                                                const ModelServices& services) {
-  if (!config.has_fluid()) return std::make_unique<BodyParticles<D>>(config, bodies);
+  if (!config.has_fluid()) {
+    if (services.split()) {
+      throw InputError(config.file(), 0, "",
+                       "a case of bodies alone (no fluid) runs on one rank: run it without "
+                       "mpirun, or with -np 1");
+    }
+    return std::make_unique<BodyParticles<D>>(config, bodies);
+  }
   return models.make(config, bodies, services);
 }
 

@@ -193,6 +193,7 @@ std::vector<std::pair<std::string, double>> ParticleFluid<D>::counters() const {
   const double exchanges = std::max<double>(t.exchanges, 1);
   return {{"ghosts_per_exchange", ranks_.max(t.ghosts / exchanges)},
           {"migrated_per_exchange", ranks_.max(t.migrated / exchanges)},
+          {"wait_seconds", ranks_.max(t.wait_seconds)},
           {"migration_seconds", ranks_.max(t.migration_seconds)},
           {"halo_seconds", ranks_.max(t.halo_seconds)},
           {"balance_seconds", ranks_.max(t.balance_seconds)},

@@ -97,8 +97,8 @@ class ParticleFluid : public FluidSystem,
   FluidSize size() const override;
   FluidEnergy energy() const override;  // kinetic, potential and mass of the fluid
   double interaction_radius() const override { return radius_; }
-  // On several ranks: the ghosts and migrants an exchange, and the seconds of migration, halo
-  // and balance (each the largest rank's); none on one.
+  // On several ranks: the ghosts and migrants an exchange, and the seconds of waiting for the
+  // other ranks, of migration, halo and balance (each the largest rank's); none on one.
   std::vector<std::pair<std::string, double>> counters() const override;
   // The particles (every field), the cells of the last sort, and then the model's own state.
   void archive_state(StateArchive& a) override;

@@ -85,6 +85,12 @@ void reduce(std::span<double> values, MPI_Op op) {
 }  // namespace
 #endif
 
+void Communicator::barrier() const {
+#ifdef SLUICE_WITH_MPI
+  if (split()) check(MPI_Barrier(MPI_COMM_WORLD), "a barrier");
+#endif
+}
+
 double Communicator::min(double value) const {
 #ifdef SLUICE_WITH_MPI
   if (split()) return reduce(value, MPI_MIN);

@@ -36,7 +36,9 @@ class Communicator {
   int size() const { return size_; }
   bool split() const { return size_ > 1; }
 
-  // Collective (every rank calls them, in the same order): each value over the ranks.
+  // Collective (every rank calls them, in the same order). Waits until every rank is here.
+  void barrier() const;
+  // Each value over the ranks.
   double min(double value) const;
   double max(double value) const;
   double sum(double value) const;

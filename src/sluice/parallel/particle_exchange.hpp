@@ -30,7 +30,9 @@ struct ExchangeCounts {
 struct ExchangeTotals {
   long exchanges = 0;
   double migrated = 0, ghosts = 0;  // particles, summed over the exchanges
-  double migration_seconds = 0, halo_seconds = 0, balance_seconds = 0;
+  // Waiting for the other ranks to reach the exchange (their work is larger), then the
+  // exchange's own parts.
+  double wait_seconds = 0, migration_seconds = 0, halo_seconds = 0, balance_seconds = 0;
   int balances = 0;  // the times the cuts moved
 };
 
@@ -78,6 +80,7 @@ class ParticleExchange {
   // migrates what left the slab, and takes the ghosts anew.
   void exchange(ParticleSet<D>& ps) {
     ++totals_.exchanges;
+    timed(totals_.wait_seconds, [&] { ranks_.barrier(); });
     if (++since_balance_ >= balance_.interval) {
       since_balance_ = 0;
       timed(totals_.balance_seconds, [&] { balance(ps); });

@@ -228,7 +228,11 @@ class WcsphModel final : public ParticleFluid<D> {
   // (each pair evaluated from both sides, so no two threads write the same particle).
   void compute_rates(ParticleState<D>& s) {
     pack(s, true);
-    exec::Default::for_each_balanced(s.particles.size(), WcsphRates<D, Kernel>{neighbourhood(s)});
+    WcsphNeighbourhood<D, Kernel> n = neighbourhood(s);
+    // A ghost's rates are its owner's to work out (its neighbours are read from the packed copy,
+    // which keeps every kind): split, a ghost counts as no fluid here.
+    n.f.kind = this->counted_kinds();
+    exec::Default::for_each_balanced(s.particles.size(), WcsphRates<D, Kernel>{n});
   }
 
   WcsphPairConstants pair_constants(const ParticleState<D>& s) const {
