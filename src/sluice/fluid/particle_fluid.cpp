@@ -239,7 +239,8 @@ void ParticleFluid<D>::sort_by_cell() {
   if (device_) return on_device([&] { device_->sort_by_cell(); });
   keep_out_of_walls();
   if (exchange_) exchange_->exchange(state_.particles);
-  state_.cells.sort(state_.particles.position, order_);
+  // Split, the sort drops the ghosts of the last step and the particles sent away.
+  state_.cells.sort(state_.particles.position, order_, exchange_ ? &exchange_->gone() : nullptr);
   state_.particles.reorder(order_);
 }
 

@@ -35,19 +35,25 @@ CellList<D>::CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius) {
 }
 
 template <int D>
-void CellList<D>::sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order) {
+void CellList<D>::sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order,
+                       const std::vector<bool>* gone) {
   const std::size_t n = positions.size();
   cell_of_.resize(n);
   exec::Default::for_each(n,
                           [&](std::size_t i) { cell_of_[i] = grid_.cell_of(positions[i].data()); });
+  const auto kept = [&](std::size_t i) { return gone == nullptr || !(*gone)[i]; };
   // Counting sort: stable, so particles keep their relative order within a cell and the
   // result does not depend on the thread count.
   std::fill(cell_start_.begin(), cell_start_.end(), 0);
-  for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kept(i)) ++cell_start_[cell_of_[i] + 1];
+  }
   for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-  order.resize(n);
+  order.resize(cell_start_.back());
   std::vector<std::uint32_t> next(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) order[next[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kept(i)) order[next[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  }
 }
 
 template CellGridView<2> cell_grid_over(const Vec<2>&, const Vec<2>&, Real, std::size_t&);

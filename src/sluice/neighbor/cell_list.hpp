@@ -141,8 +141,11 @@ class CellList {
   CellList(const Vec<D>& lo, const Vec<D>& hi, Real radius);
 
   // Sorts particles by cell: fills `order` (new index k holds old particle order[k]).
-  // Call reorder on the particle set with it, then `positions` are sorted.
-  void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order);
+  // Call reorder on the particle set with it, then `positions` are sorted. With `gone`, the
+  // particles i for which gone[i] holds are left out of `order` (a rank's ghosts of the last
+  // step and the particles it sent away), and reorder drops them.
+  void sort(const std::vector<Vec<D>>& positions, std::vector<std::uint32_t>& order,
+            const std::vector<bool>* gone = nullptr);
 
   Real radius() const { return grid_.cell_size; }
   std::size_t cell_count() const { return cell_start_.size() - 1; }

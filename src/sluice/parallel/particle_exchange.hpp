@@ -1,9 +1,10 @@
 // The particles' traffic between ranks at each step's neighbour stage, in the shape of Cabana's
-// distributor and halo plans: the ghosts of the last step go; the particles that left this
-// rank's slab go to the rank whose slab they entered (migration); then every rank whose slab
-// comes within the halo's depth of a particle gets a copy of it, a ghost, which the model reads
-// as a neighbour and never counts (its `owned_kind` is -1). Every field travels, the model's own
-// too, so a ghost is its owner's particle as the neighbour stage found it.
+// distributor and halo plans: the ghosts of the last step go (with the neighbour sort); the
+// particles that left this rank's slab go to the rank whose slab they entered (migration); then
+// every rank whose slab comes within the halo's depth of a particle gets a copy of it, a ghost,
+// which the model reads as a neighbour and never counts (its `owned_kind` is -1). Every field
+// travels, the model's own too, so a ghost is its owner's particle as the neighbour stage found
+// it.
 #pragma once
 
 #include <algorithm>
@@ -73,13 +74,17 @@ class ParticleExchange {
     auto& owned = ps[owned_kind_];
     for (std::size_t i = 0; i < ps.size(); ++i) owned[i] = static_cast<std::int32_t>(ps.kind[i]);
     counts_ = {};
+    gone_.assign(ps.size(), false);
     take_ghosts(ps);
   }
 
-  // Drops the ghosts, moves the cuts where the work calls for it (every balance interval),
-  // migrates what left the slab, and takes the ghosts anew.
+  // Moves the cuts where the work calls for it (every balance interval), sends away what left
+  // the slab and takes in what entered it, and takes the ghosts anew. The ghosts of the last
+  // exchange and the particles sent away stay in the set, marked in gone(): the neighbour sort
+  // that follows drops them (one copy of the set, not two).
   void exchange(ParticleSet<D>& ps) {
     ++totals_.exchanges;
+    gone_.assign(ps.size(), false);
     timed(totals_.wait_seconds, [&] { ranks_.barrier(); });
     if (++since_balance_ >= balance_.interval) {
       since_balance_ = 0;
@@ -95,6 +100,8 @@ class ParticleExchange {
   Real depth() const { return depth_; }
   const ExchangeCounts& last() const { return counts_; }
   const ExchangeTotals& totals() const { return totals_; }
+  // Whether each particle of the set is to go (see exchange()); after start(), none.
+  const std::vector<bool>& gone() const { return gone_; }
 
   // Checkpoints: the cuts, where balancing has moved them, and the exchanges since the last
   // balance.
@@ -106,23 +113,25 @@ class ParticleExchange {
 
  private:
   // Sends away the particles this rank owns that left its slab, and takes in those that
-  // entered it.
+  // entered it; marks the ones sent, and the last exchange's ghosts, gone.
   void migrate(ParticleSet<D>& ps) {
     const std::size_t ranks = static_cast<std::size_t>(ranks_.size());
     std::vector<std::vector<std::uint32_t>> leaving(ranks);
-    std::vector<std::uint32_t> keep;
     const auto& owned = ps[owned_kind_];
     for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (owned[i] < 0) continue;
+      if (owned[i] < 0) {
+        gone_[i] = true;
+        continue;
+      }
       const int r = slabs_.owner(ps.position[i][slabs_.axis()]);
-      (r == ranks_.rank() ? keep : leaving[static_cast<std::size_t>(r)])
-          .push_back(static_cast<std::uint32_t>(i));
+      if (r == ranks_.rank()) continue;
+      leaving[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
+      gone_[i] = true;
     }
     counts_ = {};
     for (const auto& l : leaving) counts_.sent += l.size();
-    const auto incoming = ranks_.exchange(packed(ps, leaving));
-    ps.keep(keep);
-    counts_.received = append(ps, incoming);
+    counts_.received = append(ps, ranks_.exchange(packed(ps, leaving)));
+    gone_.resize(ps.size(), false);
   }
 
   // The work of the particles this rank owns, or of those in each bin of [lo, hi) along the
@@ -188,16 +197,19 @@ class ParticleExchange {
 
   // Appends to the set the copies of the other ranks' particles within the halo's depth.
   void take_ghosts(ParticleSet<D>& ps) {
-    const std::size_t owned_count = ps.size();
+    const std::size_t before = ps.size();
     std::vector<std::vector<std::uint32_t>> copies(static_cast<std::size_t>(ranks_.size()));
-    for (std::size_t i = 0; i < owned_count; ++i) {
+    const auto& own = ps[owned_kind_];
+    for (std::size_t i = 0; i < before; ++i) {
+      if (own[i] < 0 || gone_[i]) continue;
       slabs_.for_each_rank_near(ps.position[i][slabs_.axis()], depth_, ranks_.rank(), [&](int r) {
         copies[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
       });
     }
     counts_.ghosts = append(ps, ranks_.exchange(packed(ps, copies)));
     auto& owned = ps[owned_kind_];
-    for (std::size_t i = owned_count; i < ps.size(); ++i) owned[i] = -1;
+    for (std::size_t i = before; i < ps.size(); ++i) owned[i] = -1;
+    gone_.resize(ps.size(), false);
   }
 
   std::vector<std::vector<unsigned char>> packed(
@@ -230,6 +242,7 @@ class ParticleExchange {
   int since_balance_ = 0;  // exchanges since the last balance
   ExchangeCounts counts_;
   ExchangeTotals totals_;
+  std::vector<bool> gone_;
 };
 
 }  // namespace sluice

@@ -23,7 +23,9 @@ template <int D>
 void ParticleSet<D>::reorder(const std::vector<std::uint32_t>& order) {
   // A set already in order (a device's copy come back, a tank at rest) skips the copies.
   std::uint32_t k = 0;
-  if (std::all_of(order.begin(), order.end(), [&](std::uint32_t i) { return i == k++; })) return;
+  if (order.size() == size() &&
+      std::all_of(order.begin(), order.end(), [&](std::uint32_t i) { return i == k++; }))
+    return;
   keep(order);
 }
 

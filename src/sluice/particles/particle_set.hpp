@@ -142,7 +142,8 @@ class ParticleSet {
     });
   }
 
-  // Applies a permutation to every field: after it, particle k is the one that was order[k].
+  // Applies a permutation to every field: after it, particle k is the one that was order[k]
+  // (an `order` shorter than the set drops those it does not name).
   void reorder(const std::vector<std::uint32_t>& order);
   // Keeps the particles `which` alone, in that order (a rank's own after a migration); a field
   // that assign_fields left empty stays empty.

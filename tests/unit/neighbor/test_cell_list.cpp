@@ -102,6 +102,23 @@ TEST(CellList, PointsOutsideTheGridAreClampedNotLost) {
   EXPECT_EQ(std::set<std::uint32_t>(order.begin(), order.end()).size(), points.size());
 }
 
+TEST(CellList, ASortLeavesOutTheParticlesThatAreGone) {
+  const std::vector<Vec<2>> points = random_points<2>(300, 7);
+  std::vector<bool> gone(points.size());
+  for (std::size_t i = 0; i < gone.size(); ++i) gone[i] = i % 3 == 1;
+  CellList<2> cells(Vec<2>::Zero(), Vec<2>::Ones(), 0.1);
+  std::vector<std::uint32_t> all, kept;
+  cells.sort(points, all);
+  cells.sort(points, kept, &gone);
+  // The same order with the gone ones taken out, and cells that count only the rest.
+  std::vector<std::uint32_t> expected;
+  for (const std::uint32_t i : all) {
+    if (!gone[i]) expected.push_back(i);
+  }
+  EXPECT_EQ(kept, expected);
+  EXPECT_EQ(cells.cell_starts().back(), expected.size());
+}
+
 // The clipped candidate ranges of every point, widened to multiples of W, against the brute-force
 // neighbours: each neighbour is a candidate once, and a range's length is a multiple of W
 // unless it spans its whole row of cells.

@@ -27,6 +27,7 @@ TEST(ParticleExchange, OneRankKeepsEveryParticleAndTakesNoGhost) {
   EXPECT_EQ(exchange.last().sent, 0u);
   EXPECT_EQ(exchange.last().received, 0u);
   EXPECT_EQ(exchange.last().ghosts, 0u);
+  EXPECT_EQ(exchange.gone(), std::vector<bool>(6, false));
   EXPECT_EQ(ps.position[2][0], 5.0);
 }
 
