@@ -70,13 +70,18 @@ start_run() {
   pid=$!
 }
 
-# SIGKILL to the run: to its process, or with LAUNCH to every rank (the launcher's children).
+# SIGKILL to the run: to its process, or with LAUNCH to every rank (the launcher's children;
+# a kill drawn at a resumed run's start waits until the launcher has started them).
 kill_run() {
   if [ ${#launch[@]} -eq 0 ]; then
     kill -KILL "$pid" 2>/dev/null
-  else
-    kill -0 "$pid" 2>/dev/null && pkill -KILL -P "$pid"
+    return
   fi
+  while kill -0 "$pid" 2>/dev/null; do
+    pkill -KILL -P "$pid" && return 0
+    sleep 0.005
+  done
+  return 1
 }
 
 for target in "${targets[@]}"; do

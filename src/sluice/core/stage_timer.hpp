@@ -7,6 +7,14 @@
 
 namespace sluice {
 
+// Runs fn() and adds the wall-clock seconds it took to `seconds`.
+template <class Fn>
+void add_seconds(double& seconds, Fn&& fn) {
+  const auto start = std::chrono::steady_clock::now();
+  fn();
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 class StageTimers {
  public:
   struct Entry {
@@ -25,10 +33,7 @@ class StageTimers {
 
   template <class Fn>
   void time(std::size_t slot, Fn&& fn) {
-    const auto start = std::chrono::steady_clock::now();
-    fn();
-    entries_[slot].seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    add_seconds(entries_[slot].seconds, fn);
   }
 
   const std::vector<Entry>& entries() const { return entries_; }

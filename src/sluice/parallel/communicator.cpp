@@ -69,63 +69,50 @@ Communicator Communicator::world() {
   return alone();
 }
 
-#ifdef SLUICE_WITH_MPI
-namespace {
-double reduce(double value, MPI_Op op) {
-  double out = value;
-  check(MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, op, MPI_COMM_WORLD), "a reduction");
-  return out;
-}
-void reduce(std::span<double> values, MPI_Op op) {
-  if (values.empty()) return;
-  check(MPI_Allreduce(MPI_IN_PLACE, values.data(), as_count(values.size()), MPI_DOUBLE, op,
-                      MPI_COMM_WORLD),
-        "a reduction");
-}
-}  // namespace
-#endif
-
 void Communicator::barrier() const {
 #ifdef SLUICE_WITH_MPI
   if (split()) check(MPI_Barrier(MPI_COMM_WORLD), "a barrier");
 #endif
 }
 
-double Communicator::min(double value) const {
+namespace {
+enum class Reduction { kMin, kMax, kSum };
+
+// Each of `values` over the ranks, in place (nothing to do on one rank).
+void reduce(bool split, std::span<double> values, Reduction how) {
 #ifdef SLUICE_WITH_MPI
-  if (split()) return reduce(value, MPI_MIN);
+  if (!split || values.empty()) return;
+  const MPI_Op op = how == Reduction::kMin ? MPI_MIN : how == Reduction::kMax ? MPI_MAX : MPI_SUM;
+  check(MPI_Allreduce(MPI_IN_PLACE, values.data(), as_count(values.size()), MPI_DOUBLE, op,
+                      MPI_COMM_WORLD),
+        "a reduction");
+#else
+  (void)split, (void)values, (void)how;
 #endif
+}
+}  // namespace
+
+double Communicator::min(double value) const {
+  reduce(split(), {&value, 1}, Reduction::kMin);
   return value;
 }
 
 double Communicator::max(double value) const {
-#ifdef SLUICE_WITH_MPI
-  if (split()) return reduce(value, MPI_MAX);
-#endif
+  reduce(split(), {&value, 1}, Reduction::kMax);
   return value;
 }
 
 double Communicator::sum(double value) const {
-#ifdef SLUICE_WITH_MPI
-  if (split()) return reduce(value, MPI_SUM);
-#endif
+  reduce(split(), {&value, 1}, Reduction::kSum);
   return value;
 }
 
 void Communicator::sum(std::span<double> values) const {
-#ifdef SLUICE_WITH_MPI
-  if (split()) reduce(values, MPI_SUM);
-#else
-  (void)values;
-#endif
+  reduce(split(), values, Reduction::kSum);
 }
 
 void Communicator::max(std::span<double> values) const {
-#ifdef SLUICE_WITH_MPI
-  if (split()) reduce(values, MPI_MAX);
-#else
-  (void)values;
-#endif
+  reduce(split(), values, Reduction::kMax);
 }
 
 int Communicator::first_rank_where(bool holds) const {

@@ -8,11 +8,11 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <vector>
 
+#include "sluice/core/stage_timer.hpp"
 #include "sluice/core/state_archive.hpp"
 #include "sluice/parallel/communicator.hpp"
 #include "sluice/parallel/slab_decomposition.hpp"
@@ -85,13 +85,13 @@ class ParticleExchange {
   void exchange(ParticleSet<D>& ps) {
     ++totals_.exchanges;
     gone_.assign(ps.size(), false);
-    timed(totals_.wait_seconds, [&] { ranks_.barrier(); });
+    add_seconds(totals_.wait_seconds, [&] { ranks_.barrier(); });
     if (++since_balance_ >= balance_.interval) {
       since_balance_ = 0;
-      timed(totals_.balance_seconds, [&] { balance(ps); });
+      add_seconds(totals_.balance_seconds, [&] { balance(ps); });
     }
-    timed(totals_.migration_seconds, [&] { migrate(ps); });
-    timed(totals_.halo_seconds, [&] { take_ghosts(ps); });
+    add_seconds(totals_.migration_seconds, [&] { migrate(ps); });
+    add_seconds(totals_.halo_seconds, [&] { take_ghosts(ps); });
     totals_.migrated += static_cast<double>(counts_.sent);
     totals_.ghosts += static_cast<double>(counts_.ghosts);
   }
@@ -186,13 +186,6 @@ class ParticleExchange {
     }
     slabs_ = SlabDecomposition(slabs_.axis(), std::move(cuts));
     ++totals_.balances;
-  }
-
-  template <class Work>
-  static void timed(double& seconds, Work&& work) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   // Appends to the set the copies of the other ranks' particles within the halo's depth.
