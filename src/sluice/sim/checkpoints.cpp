@@ -33,7 +33,8 @@ long long step_of(const std::string& name) {
 }  // namespace
 
 CheckpointFolder::CheckpointFolder(const std::string& out_dir, const Communicator& ranks)
-    : root_(out_dir + "/checkpoints"),
+    : ranks_(ranks.size()),
+      root_(out_dir + "/checkpoints"),
       folder_(root_ +
               (ranks.split() ? fmt::format("/rank_{}_of_{}", ranks.rank(), ranks.size()) : "")) {}
 
@@ -84,15 +85,16 @@ io::CheckpointHeader checkpoint_header(const io::CaseConfig& config, int dimensi
   return h;
 }
 
-io::Checkpoint newest_checkpoint(const CheckpointFolder& folder,
-                                 const io::CheckpointHeader& expected,
-                                 const std::function<void(const std::string&)>& warn) {
-  const std::vector<std::string> files = folder.files();
-  if (files.empty()) {
-    throw InputError(folder.path(), 0, "",
-                     "no checkpoint to resume from (the case's checkpoint_interval turns them on)");
-  }
+namespace {
+
+// newest_checkpoint's search, with none found as no value (a rank of several must not stop
+// alone: the others learn it in the next reduction).
+std::optional<io::Checkpoint> find_newest(const std::vector<std::string>& files,
+                                          const io::CheckpointHeader& expected,
+                                          const std::function<void(const std::string&)>& warn,
+                                          std::optional<long long> latest_step) {
   for (const std::string& path : files) {
+    if (latest_step && step_of(fs::path(path).filename().string()) > *latest_step) continue;
     io::Checkpoint checkpoint;
     try {
       checkpoint = io::read_checkpoint(path);
@@ -123,7 +125,81 @@ io::Checkpoint newest_checkpoint(const CheckpointFolder& folder,
     }
     return checkpoint;
   }
-  throw InputError(folder.path(), 0, "", "no checkpoint reads back whole; cannot resume");
+  return std::nullopt;
+}
+
+// How many ranks wrote the checkpoints in OUT/checkpoints (`root`): K for folders
+// rank_R_of_K, 1 for checkpoints in the root itself, 0 for none.
+int ranks_that_wrote(const std::string& root) {
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(root, error)) {
+    const std::string name = entry.path().filename().string();
+    if (step_of(name) >= 0) return 1;
+    const auto of = name.find("_of_");
+    if (entry.is_directory() && name.starts_with("rank_") && of != std::string::npos) {
+      const std::string count = name.substr(of + 4);
+      if (!count.empty() &&
+          std::all_of(count.begin(), count.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return std::stoi(count);
+    }
+  }
+  return 0;
+}
+
+void refuse_if_empty(const CheckpointFolder& folder, const std::vector<std::string>& files) {
+  if (!files.empty()) return;
+  const int wrote = ranks_that_wrote(folder.root());
+  if (wrote > 0) {
+    throw InputError(
+        folder.path(), 0, "",
+        fmt::format("no checkpoint to resume from on {}: the run's checkpoints were "
+                    "written on {} (resume it on as many: {})",
+                    folder.ranks() == 1 ? "one rank" : fmt::format("{} ranks", folder.ranks()),
+                    wrote == 1 ? "one rank" : fmt::format("{} ranks", wrote),
+                    wrote == 1 ? "without mpirun" : fmt::format("mpirun -np {}", wrote)));
+  }
+  throw InputError(folder.path(), 0, "",
+                   "no checkpoint to resume from (the case's checkpoint_interval turns them on)");
+}
+
+}  // namespace
+
+io::Checkpoint newest_checkpoint(const CheckpointFolder& folder,
+                                 const io::CheckpointHeader& expected,
+                                 const std::function<void(const std::string&)>& warn,
+                                 std::optional<long long> latest_step) {
+  const std::vector<std::string> files = folder.files();
+  refuse_if_empty(folder, files);
+  std::optional<io::Checkpoint> found = find_newest(files, expected, warn, latest_step);
+  if (!found)
+    throw InputError(folder.path(), 0, "", "no checkpoint reads back whole; cannot resume");
+  return std::move(*found);
+}
+
+io::Checkpoint newest_checkpoint_of_every_rank(const CheckpointFolder& folder,
+                                               const io::CheckpointHeader& expected,
+                                               const std::function<void(const std::string&)>& warn,
+                                               const Communicator& ranks) {
+  if (!ranks.split()) return newest_checkpoint(folder, expected, warn);
+  const std::vector<std::string> files = folder.files();
+  if (ranks.min(files.empty() ? 0.0 : 1.0) == 0.0) refuse_if_empty(folder, {});
+  // Each round the ranks agree on the lowest of their newest steps (no step above it is on
+  // every rank); if a rank lacks that very step, those that hold it look below it next round.
+  // The ranks' lockstep keeps them at most one checkpoint apart: a round or two settles it.
+  std::optional<io::Checkpoint> mine = find_newest(files, expected, warn, std::nullopt);
+  for (;;) {
+    const double agreed = ranks.min(mine ? double(mine->header.step) : -1.0);
+    if (agreed < 0) {
+      throw InputError(folder.path(), 0, "",
+                       "no checkpoint of one step reads back whole on every rank; cannot resume");
+    }
+    if (mine && double(mine->header.step) > agreed) {
+      mine = find_newest(files, expected, warn, (long long)agreed);
+    }
+    const bool held_here = mine && double(mine->header.step) == agreed;
+    if (ranks.min(held_here ? 1.0 : 0.0) == 1.0) return std::move(*mine);
+    if (held_here) mine = find_newest(files, expected, warn, (long long)agreed - 1);
+  }
 }
 
 }  // namespace sluice

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,10 +21,12 @@ inline constexpr std::size_t kCheckpointsKept = 2;
 class CheckpointFolder {
  public:
   // OUT/checkpoints; on several ranks, each rank's OUT/checkpoints/rank_R_of_N (a run resumes
-  // on as many ranks as wrote it).
+  // on as many ranks as wrote it, and is told so on another number).
   explicit CheckpointFolder(const std::string& out_dir, const Communicator& ranks = {});
 
   const std::string& path() const { return folder_; }
+  const std::string& root() const { return root_; }  // OUT/checkpoints
+  int ranks() const { return ranks_; }               // of the run that writes or reads it
   // Writes the checkpoint of `header.step` atomically, then removes all but the newest
   // kCheckpointsKept (and any temporary file a killed run left).
   void write(const io::CheckpointHeader& header, std::string_view state) const;
@@ -34,18 +37,29 @@ class CheckpointFolder {
   void clear() const;
 
  private:
-  std::string root_;  // OUT/checkpoints
+  int ranks_;
+  std::string root_;
   std::string folder_;
 };
 
 // What a checkpoint of this case, model and build records (time and step aside).
 io::CheckpointHeader checkpoint_header(const io::CaseConfig& config, int dimension);
 
-// The newest checkpoint in the folder that reads back whole; each damaged or partial one newer
-// than it is skipped with a line to `warn`. Throws InputError when there is none, or when it
-// is of another case, model, dimension or sluice version than `expected`.
+// The newest checkpoint in the folder that reads back whole, of a step no later than
+// `latest_step` when one is given; each damaged or partial one newer than it is skipped with a
+// line to `warn`. Throws InputError when there is none, or when it is of another case, model,
+// dimension or sluice version than `expected`.
 io::Checkpoint newest_checkpoint(const CheckpointFolder& folder,
                                  const io::CheckpointHeader& expected,
-                                 const std::function<void(const std::string&)>& warn);
+                                 const std::function<void(const std::string&)>& warn,
+                                 std::optional<long long> latest_step = std::nullopt);
+
+// The newest checkpoint that every rank holds whole, of one step on all (collective): a run
+// killed while its ranks were writing a checkpoint leaves the ranks that had finished one step
+// ahead, and resumes from the step before. One rank alone: newest_checkpoint.
+io::Checkpoint newest_checkpoint_of_every_rank(const CheckpointFolder& folder,
+                                               const io::CheckpointHeader& expected,
+                                               const std::function<void(const std::string&)>& warn,
+                                               const Communicator& ranks);
 
 }  // namespace sluice

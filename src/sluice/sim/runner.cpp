@@ -79,14 +79,12 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   std::optional<io::Checkpoint> resumed;
   RunSchedule schedule;
   if (options.resume) {
-    resumed = newest_checkpoint(checkpoint_folder, identity, [&](const std::string& warning) {
-      if (!options.quiet) fmt::print(stderr, "warning: {}\n", warning);  // each rank's own
-    });
-    if (ranks.min(double(resumed->header.step)) != ranks.max(double(resumed->header.step))) {
-      throw InputError(checkpoint_folder.path(), 0, "",
-                       "the ranks' newest whole checkpoints are of different steps: resume "
-                       "from an earlier one (remove the newer files)");
-    }
+    resumed = newest_checkpoint_of_every_rank(
+        checkpoint_folder, identity,
+        [&](const std::string& warning) {
+          if (!options.quiet) fmt::print(stderr, "warning: {}\n", warning);  // each rank's own
+        },
+        ranks);
     if (resumed->header.time >= end_time * (1 - 1e-12)) {
       throw InputError(checkpoint_folder.path(), 0, "",
                        fmt::format("the run already reached t = {:.6g} s, its end time is {:.6g} "

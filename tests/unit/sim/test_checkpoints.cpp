@@ -1,5 +1,6 @@
-// OUT/checkpoints/: the newest two kept; resuming takes the newest that reads back whole and
-// refuses one of another case, model or version.
+// OUT/checkpoints/: the newest two kept; resuming takes the newest that reads back whole (no
+// later than a given step, where ranks agree on one) and refuses one of another case, model or
+// version.
 #include "sluice/sim/checkpoints.hpp"
 
 #include <gtest/gtest.h>
@@ -58,6 +59,23 @@ TEST(CheckpointFolder, DamagedNewestIsSkippedWithAWarning) {
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("skipping the checkpoint"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("step_0000000020.ckpt"), std::string::npos) << warnings[0];
+}
+
+// On several ranks the resume looks below a step that one rank lacks (its write cut short).
+TEST(CheckpointFolder, NewestNoLaterThanAStep) {
+  ScratchDir out("checkpoints");
+  const CheckpointFolder folder(out.path().string());
+  const io::CheckpointHeader h = checkpoint_header(small_case(), 2);
+  folder.write(at_step(h, 10), "older");
+  folder.write(at_step(h, 20), "newer");
+  const auto no_warning = [](const std::string& w) { ADD_FAILURE() << w; };
+  EXPECT_EQ(newest_checkpoint(folder, h, no_warning, 20).state, "newer");
+  EXPECT_EQ(newest_checkpoint(folder, h, no_warning, 19).state, "older");
+  EXPECT_EQ(newest_checkpoint(folder, h, no_warning, 10).header.step, 10);
+  EXPECT_THROW(newest_checkpoint(folder, h, no_warning, 9), InputError);
+  // One rank alone: its own newest.
+  EXPECT_EQ(newest_checkpoint_of_every_rank(folder, h, no_warning, Communicator::alone()).state,
+            "newer");
 }
 
 // The InputError message of resuming `folder` as `expected` ("" if it resumes).
