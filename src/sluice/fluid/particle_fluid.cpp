@@ -295,10 +295,11 @@ std::vector<Wrench> ParticleFluid<D>::body_loads(const std::vector<BodyKinematic
   std::vector<Vec3> force(body_points_.size(), Vec3::Zero());
   body_point_forces(motion, force);
   if (!exchange_) return body_points_.loads(force, motion, body_count_);
-  // A point's owner alone counts its force; then the bodies' loads add up over the ranks.
+  // A point's owner alone counts its force (or each rank its share of it); then the bodies'
+  // loads add up over the ranks.
   const auto& ps = state_.particles;
   const std::int32_t* kinds = counted_kinds();
-  for (std::size_t i = 0; i < ps.size(); ++i) {
+  for (std::size_t i = 0; i < ps.size() && !body_point_forces_are_rank_shares(); ++i) {
     if (ps.body_point[i] >= 0 && kinds[i] < 0) force[ps.body_point[i]] = Vec3::Zero();
   }
   std::vector<Wrench> loads = body_points_.loads(force, motion, body_count_);

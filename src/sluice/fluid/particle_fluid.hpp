@@ -116,6 +116,11 @@ class ParticleFluid : public FluidSystem,
   // Whether body_point_forces reads the particle set (else a device's particles are not copied
   // back for it, at each exchange with the bodies).
   virtual bool body_forces_read_particles() const { return true; }
+  // On several ranks: whether body_point_forces gives this rank's share of every body point's
+  // force (what its own fluid particles put on the point, ghost points too), which adds up over
+  // the ranks as it is; else it gives the whole force at each point this rank owns, and a ghost
+  // point's is dropped.
+  virtual bool body_point_forces_are_rank_shares() const { return false; }
   // A model whose particles live elsewhere (on a device) copies them into the particle set
   // here; whatever reads the particle set (output, probes, the check, checkpoints) calls it
   // first. The base copies the emulated device's particles back; nothing otherwise.
@@ -156,6 +161,9 @@ class ParticleFluid : public FluidSystem,
   // integers): a ghost's is -1, so that only its owner counts it.
   const std::int32_t* counted_kinds() const;
   const Communicator& ranks() const { return ranks_; }
+  // How many times the ranks' cuts have moved (shift balancing): what this rank owns of the
+  // walls changes with them.
+  int cut_moves() const { return exchange_ ? exchange_->totals().balances : 0; }
 
   // The neighbours stage: puts back fluid found in a wall's layers, then sorts the particle
   // set by cell.

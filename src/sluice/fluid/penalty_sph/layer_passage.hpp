@@ -12,6 +12,7 @@
 #include "sluice/coupling/body_points.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 #include "sluice/fluid/penalty_sph/solid_layers.hpp"
+#include "sluice/parallel/communicator.hpp"
 #include "sluice/particles/particle_set.hpp"
 
 namespace sluice {
@@ -41,8 +42,10 @@ class LayerPassage {
     }
   }
 
-  // The layers' pass levels as their grains (body particles of `points`) lie now.
-  void update_levels(const ParticleSet<D>& ps, const BodyPoints& points) {
+  // The layers' pass levels as their grains (body particles of `points`) lie now, over every
+  // rank's.
+  void update_levels(const ParticleSet<D>& ps, const BodyPoints& points,
+                     const Communicator& ranks) {
     const std::vector<SolidLayerConfig>& layers = *layers_;
     pass_level_.resize(layers.size());
     for (std::size_t k = 0; k < layers.size(); ++k) {
@@ -60,6 +63,7 @@ class LayerPassage {
         }
       }
     }
+    for (Real& level : pass_level_) level = static_cast<Real>(ranks.min(level));
   }
 
   // Marks fluid particle i where it is below the level of a layer it started above.
@@ -73,10 +77,12 @@ class LayerPassage {
   // Whether any fluid particle started above a layer (else there is no fraction to give).
   bool measured() const { return above_count_ > 0; }
 
-  double held_back_fraction(const ParticleSet<D>& ps) const {
-    long passed = 0;
-    for (std::size_t i = 0; i < ps.size(); ++i) passed += ps[passed_][i];
-    return 1.0 - static_cast<double>(passed) / static_cast<double>(above_count_);
+  // Over the fluid particles that `kinds` counts (a ghost's -1), on every rank.
+  double held_back_fraction(const ParticleSet<D>& ps, const std::int32_t* kinds,
+                            const Communicator& ranks) const {
+    double passed = 0;
+    for (std::size_t i = 0; i < ps.size(); ++i) passed += kinds[i] == 0 ? ps[passed_][i] : 0;
+    return 1.0 - ranks.sum(passed) / static_cast<double>(above_count_);
   }
 
  private:

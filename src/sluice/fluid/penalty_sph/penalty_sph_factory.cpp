@@ -1,5 +1,7 @@
 #include "sluice/fluid/penalty_sph/penalty_sph_factory.hpp"
 
+#include "sluice/core/errors.hpp"
+
 #include "sluice/fluid/penalty_sph/penalty_sph_model.hpp"
 #include "sluice/fluid/penalty_sph/penalty_sph_parameters.hpp"
 
@@ -9,9 +11,17 @@ namespace {
 
 template <int D>
 std::unique_ptr<FluidSystem> make_penalty_sph(const io::CaseConfig& config,
-                                              const BodyGeometry& bodies, const ModelServices&) {
-  auto model =
-      std::make_unique<PenaltySphModel<D>>(read_penalty_sph_parameters(config), config, bodies);
+                                              const BodyGeometry& bodies,
+                                              const ModelServices& services) {
+  const PenaltySphParameters p = read_penalty_sph_parameters(config);
+  auto model = std::make_unique<PenaltySphModel<D>>(p, config, bodies);
+  if (services.split()) {
+    if (p.emulated_device) {
+      throw InputError(config.file(), config.model_line, "model.device",
+                       "a run on several ranks runs on the CPU for now (device: cpu)");
+    }
+    model->split_over(*services.ranks);
+  }
   model->initialize();
   return model;
 }
@@ -30,6 +40,7 @@ ModelEntry penalty_sph_entry() {
   entry.size.device_bytes_per_element = [](int dimension) { return dimension == 2 ? 404 : 508; };
   entry.schemes = {"spring-exchanges"};
   entry.devices = {"cpu", "emulated"};
+  entry.one_rank_only.clear();
   return entry;
 }
 

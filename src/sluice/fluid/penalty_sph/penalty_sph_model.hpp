@@ -13,9 +13,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
@@ -100,6 +102,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
       passage_.start(ps, p_.solids, std::move(grain_bodies));
     }
     has_bodies_ = this->body_points().size() > 0;
+    contact_support_ = contact_support();
+    // Split once the solid layers stand, before the first rates, which each rank then works out
+    // over its own particles and its ghosts.
+    if (split_) this->distribute(*split_, halo_depth());
     compute_density();
     compute_forces();
     measure_extremes();
@@ -129,16 +135,26 @@ class PenaltySphModel final : public ParticleFluid<D> {
   }
 
   std::vector<std::pair<std::string, double>> counters() const override {
+    // Over the ranks: each counts its own particles' contacts (fluid_steps_ counts the whole
+    // case's fluid on every rank).
+    const Communicator& ranks = this->ranks();
+    std::array<double, 4> sums{double(contacts_), force_sum_, double(crossings_),
+                               double(substeps_)};
+    ranks.sum(sums);
+    const auto [contacts, force_sum, crossings, substeps] = sums;
     const double particle_steps = static_cast<double>(fluid_steps_);
     std::vector<std::pair<std::string, double>> out = {
-        {"boundary_contacts_per_step", steps_ > 0 ? double(contacts_) / double(steps_) : 0},
-        {"mean_boundary_force", contacts_ > 0 ? force_sum_ / double(contacts_) : 0},
-        {"peak_boundary_force", peak_force_},
-        {"boundary_crossings", static_cast<double>(crossings_)},
-        {"contact_substeps_per_particle_step",
-         particle_steps > 0 ? double(substeps_) / particle_steps : 0}};
-    if (passage_.measured())
-      out.emplace_back("held_back_fraction", passage_.held_back_fraction(this->state().particles));
+        {"boundary_contacts_per_step", steps_ > 0 ? contacts / double(steps_) : 0},
+        {"mean_boundary_force", contacts > 0 ? force_sum / contacts : 0},
+        {"peak_boundary_force", ranks.max(peak_force_)},
+        {"boundary_crossings", crossings},
+        {"contact_substeps_per_particle_step", particle_steps > 0 ? substeps / particle_steps : 0}};
+    if (passage_.measured()) {
+      out.emplace_back(
+          "held_back_fraction",
+          passage_.held_back_fraction(this->state().particles, this->counted_kinds(), ranks));
+    }
+    for (auto& entry : ParticleFluid<D>::counters()) out.push_back(std::move(entry));
     return out;
   }
 
@@ -147,6 +163,9 @@ class PenaltySphModel final : public ParticleFluid<D> {
     e.elastic = elastic_energy();
     return e;
   }
+
+  // From initialize() on, the particles split over `ranks` (ParticleFluid::distribute).
+  void split_over(const Communicator& ranks) { split_ = ranks; }
 
   const PenaltyLaw& law() const { return settings_.law; }
   FieldHandle<Vec<D>> boundary_force_field() const { return boundary_force_; }
@@ -248,6 +267,22 @@ class PenaltySphModel final : public ParticleFluid<D> {
     this->run_on_device(std::move(run));
   }
 
+  // The walls and fixed layers this rank holds, into solids_.
+  void gather_fixed_solids() {
+    auto& ps = this->state().particles;
+    solids_.gather(ps, ps[solid_spacing_], config_.spacing, contact_support_);
+    solids_gathered_ = true;
+    gathered_at_cut_move_ = this->cut_moves();
+  }
+
+  // Split, what a rank holds of the walls changes where its cuts move (at the exchange of the
+  // neighbour stage): gathered again at once, for the contacts the energy counts and the drift.
+  void sort_by_cell() override {
+    ParticleFluid<D>::sort_by_cell();
+    if (!device_ && solids_gathered_ && gathered_at_cut_move_ != this->cut_moves())
+      gather_fixed_solids();
+  }
+
   // The particles sorted by cell again, over a box that holds the solid layers too.
   void sort_again() {
     ParticleState<D>& s = this->state();
@@ -281,14 +316,15 @@ class PenaltySphModel final : public ParticleFluid<D> {
     }
     auto& ps = this->state().particles;
     // Walls and fixed solid layers stand still: gathered once.
-    if (!solids_gathered_) solids_.gather(ps, ps[solid_spacing_], config_.spacing, kernels_.h);
-    solids_gathered_ = true;
+    if (!solids_gathered_) gather_fixed_solids();
+    // Split, a rank drifts its own fluid particles; its ghosts are taken anew after the drift.
+    const std::int32_t* kinds = this->counted_kinds();
     step_results_.assign(ps.size(), {});
     exec::Default::for_each(ps.size(), PenaltyHalfKick<D>{arrays(), dt});
     if (!has_bodies_) {
       drifting_.clear();
       for (std::size_t i = 0; i < ps.size(); ++i) {
-        if (ps.is_fluid(i)) drifting_.push_back(static_cast<std::uint32_t>(i));
+        if (kinds[i] == 0) drifting_.push_back(static_cast<std::uint32_t>(i));
       }
       drift(drifting_, dt, false);
       finish_drift();
@@ -321,7 +357,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
                                                   solids_.support,
                                                   dt};
     for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (ps.is_fluid(i)) (out_of_reach(i) ? far : drifting_).push_back(std::uint32_t(i));
+      if (kinds[i] == 0) (out_of_reach(i) ? far : drifting_).push_back(std::uint32_t(i));
     }
     drift(far, dt, false);
   }
@@ -341,8 +377,30 @@ class PenaltySphModel final : public ParticleFluid<D> {
     if (drifted_ >= step_dt_ * (1 - 1e-9)) finish_drift();
   }
 
-  // The bodies' loads are the model's own sums (body_point_forces): no particle is read.
+  // The bodies' loads are the model's own sums (body_point_forces): no particle is read. Split,
+  // the impulses are what this rank's own fluid put on every point, ghost points too.
   bool body_forces_read_particles() const override { return false; }
+  bool body_point_forces_are_rank_shares() const override { return true; }
+
+  // The contact support S: the largest (L_b + l0) / 2 of the case's solids, and not below the
+  // viscosity kernel's h (SolidParticles::gather).
+  Real contact_support() const {
+    const auto& ps = this->state().particles;
+    Real support = kernels_.h;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!ps.is_fluid(i))
+        support = std::max(support, (ps[solid_spacing_][i] + config_.spacing) / 2);
+    }
+    return support;
+  }
+
+  // How deep a rank's ghosts reach beyond its slab: its own fluid particles read the density of
+  // every neighbour within h, which that neighbour sums over its own within h (2 h); and a drift
+  // meets the solids within two contact supports of where it starts (2 S), bodies' particles
+  // that may have moved towards it over the step too (h / 2 more).
+  Real halo_depth() const {
+    return std::max(2 * kernels_.h, 2 * contact_support_ + kernels_.h / 2);
+  }
 
   // The bodies hang on the fluid by springs of Ks each: the coupler exchanges often enough
   // for the lightest of them.
@@ -393,9 +451,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
     const auto max = [&](const auto& value) { return exec::Default::max_of(ps.size(), value); };
     add_counters(PenaltyStepCounters<D>{step_results_.data(), boundary()}.totals(sum, max));
     if (!p_.solids.empty()) {
-      passage_.update_levels(ps, this->body_points());
+      passage_.update_levels(ps, this->body_points(), this->ranks());
+      const std::int32_t* kinds = this->counted_kinds();
       for (std::size_t i = 0; i < ps.size(); ++i) {
-        if (ps.is_fluid(i)) passage_.record(ps, i);
+        if (kinds[i] == 0) passage_.record(ps, i);
       }
     }
   }
@@ -445,18 +504,24 @@ class PenaltySphModel final : public ParticleFluid<D> {
     exec::Default::for_each(s.particles.size(),
                             PenaltyBodyPressureForce<D>{arrays(), constants(), s.cells.view(),
                                                         body_pressure_force_.data()});
+    // Split, a point's owner holds every fluid neighbour of it: a ghost point's force is its
+    // owner's to give.
+    const std::int32_t* kinds = this->counted_kinds();
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+      const std::int32_t k = s.particles.body_point[i];
+      if (k >= 0 && kinds[i] < 0) body_pressure_force_[std::size_t(k)] = Vec<D>::Zero();
+    }
   }
 
   // 1/2 Ks d^2 over the fluid-solid pairs in contact now, summed in index order.
   double elastic_energy() const {
     if (device_) return device_->elastic_energy();
     const auto& ps = this->state().particles;
-    const PenaltyElasticEnergy<D> energy{reinterpret_cast<const std::int32_t*>(ps.kind.data()),
-                                         ps.position.data(), solids_.view(),
+    const PenaltyElasticEnergy<D> energy{this->counted_kinds(), ps.position.data(), solids_.view(),
                                          settings_.law.stiffness};
     double sum = 0;
     for (std::size_t i = 0; i < ps.size(); ++i) sum += energy(i);
-    return sum;
+    return this->ranks().sum(sum);
   }
 
   void measure_extremes() {
@@ -467,8 +532,9 @@ class PenaltySphModel final : public ParticleFluid<D> {
     }
     const std::size_t n = this->state().particles.size();
     const PenaltySphArrays<D> a = arrays();
-    max_speed_ = exec::Default::max_of(n, FluidVectorNorm<D>{a.kind, a.velocity});
-    max_acceleration_ = exec::Default::max_of(n, FluidVectorNorm<D>{a.kind, a.acceleration});
+    const std::int32_t* kinds = this->counted_kinds();  // a ghost's rates are its owner's
+    max_speed_ = exec::Default::max_of(n, FluidVectorNorm<D>{kinds, a.velocity});
+    max_acceleration_ = exec::Default::max_of(n, FluidVectorNorm<D>{kinds, a.acceleration});
   }
 
   PenaltySphParameters p_;
@@ -498,7 +564,10 @@ class PenaltySphModel final : public ParticleFluid<D> {
   std::vector<Vec<D>> body_pressure_force_;  // per body point [N], on the body
   Real last_dt_ = 1;
   bool has_bodies_ = false;
-  bool solids_gathered_ = false;  // the walls and fixed layers, in solids_ or on the device
+  bool solids_gathered_ = false;       // the walls and fixed layers, in solids_ or on the device
+  Real contact_support_ = 0;           // contact_support(), of the whole case
+  std::optional<Communicator> split_;  // split_over's ranks
+  int gathered_at_cut_move_ = 0;       // cut_moves() when the fixed solids were gathered
   PenaltySphDeviceRun<D>* device_ = nullptr;  // with model.device: emulated (the base owns it)
   Real max_speed_ = 0, max_acceleration_ = 0;
   long steps_ = 0, fluid_steps_ = 0, contacts_ = 0, crossings_ = 0, substeps_ = 0;
