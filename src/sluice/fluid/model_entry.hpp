@@ -59,7 +59,7 @@ struct ModelEntry {
   std::vector<std::string> schemes = {"held-loads"};
   // Whether its particles split over several ranks (ParticleFluid::distribute); empty: it runs
   // on one, and the reason it cannot on more (a run on several ranks is refused with it).
-  std::string one_rank_only = "it has no decomposition over ranks yet";
+  std::string one_rank_only = "it has no decomposition over ranks";
 };
 
 }  // namespace sluice

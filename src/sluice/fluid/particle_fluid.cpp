@@ -175,8 +175,10 @@ void ParticleFluid<D>::distribute(const Communicator& ranks, Real halo_depth) {
       ranks, balanced_slabs(coordinates, work, axis, ranks.size()), halo_depth, owned_kind_,
       balance);
   exchange_->start(ps);
+  const std::size_t before = ps.size();
   state_.cells.sort(ps.position, order_);
   ps.reorder(order_);
+  exchange_->follow(order_, before);
 }
 
 template <int D>
@@ -240,8 +242,10 @@ void ParticleFluid<D>::sort_by_cell() {
   keep_out_of_walls();
   if (exchange_) exchange_->exchange(state_.particles);
   // Split, the sort drops the ghosts of the last step and the particles sent away.
+  const std::size_t before = state_.particles.size();
   state_.cells.sort(state_.particles.position, order_, exchange_ ? &exchange_->gone() : nullptr);
   state_.particles.reorder(order_);
+  if (exchange_) exchange_->follow(order_, before);
 }
 
 template <int D>

@@ -161,6 +161,12 @@ class ParticleFluid : public FluidSystem,
   // integers): a ghost's is -1, so that only its owner counts it.
   const std::int32_t* counted_kinds() const;
   const Communicator& ranks() const { return ranks_; }
+  // Split, collective: the ghosts' `fields` (arrays over the particle set) as their owners hold
+  // them now (ParticleExchange::refresh); one rank alone, nothing.
+  template <class... T>
+  void refresh_ghosts(std::vector<T>&... fields) const {
+    if (exchange_) exchange_->refresh(fields...);
+  }
   // How many times the ranks' cuts have moved (shift balancing): what this rank owns of the
   // walls changes with them.
   int cut_moves() const { return exchange_ ? exchange_->totals().balances : 0; }

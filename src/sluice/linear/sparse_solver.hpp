@@ -43,11 +43,29 @@ class SparseSolver {
   virtual SolveReport solve(const SparseRows& a, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
 };
 
+// A system split by rows over the run's ranks (mpirun), each rank holding its own rows.
+class SplitSolver {
+ public:
+  virtual ~SplitSolver() = default;
+  // Collective: every rank calls it with its rows. `a` holds rows first_row, first_row + 1, ...
+  // of the whole system (as many as `b`), its columns numbered as the whole system's rows; x
+  // (the first guess, then the solution) and b are this rank's entries of them. The report is
+  // of the whole system.
+  virtual SolveReport solve(const SparseRows& a, int first_row, const Eigen::VectorXd& b,
+                            Eigen::VectorXd& x) = 0;
+};
+
 // The solvers this build offers, by name: "cg_diagonal", "cg_incomplete_cholesky" and, built
 // with hypre, "boomeramg".
 std::vector<std::string> sparse_solver_names();
 // nullptr for a name not in sparse_solver_names().
 std::unique_ptr<SparseSolver> make_sparse_solver(const std::string& name,
                                                  const SolverSettings& settings);
+// Those of them that solve a system split over ranks (hypre's, in a build with it): the same
+// method under the same name, in another library.
+std::vector<std::string> split_solver_names();
+// nullptr for a name not in split_solver_names().
+std::unique_ptr<SplitSolver> make_split_solver(const std::string& name,
+                                               const SolverSettings& settings);
 
 }  // namespace sluice

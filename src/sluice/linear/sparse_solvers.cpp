@@ -1,7 +1,7 @@
 #include "sluice/linear/eigen_cg_solvers.hpp"
 #include "sluice/linear/sparse_solver.hpp"
 #ifdef SLUICE_WITH_HYPRE
-#include "sluice/linear/boomeramg_solver.hpp"
+#include "sluice/linear/hypre_solvers.hpp"
 #endif
 
 namespace sluice {
@@ -25,6 +25,23 @@ std::unique_ptr<SparseSolver> make_sparse_solver(const std::string& name,
   if (name == "boomeramg") return make_boomeramg(settings);
 #endif
   return nullptr;
+}
+
+std::vector<std::string> split_solver_names() {
+#ifdef SLUICE_WITH_HYPRE
+  return {"cg_diagonal", "bicgstab_diagonal", "boomeramg"};
+#else
+  return {};
+#endif
+}
+
+std::unique_ptr<SplitSolver> make_split_solver([[maybe_unused]] const std::string& name,
+                                               [[maybe_unused]] const SolverSettings& settings) {
+#ifdef SLUICE_WITH_HYPRE
+  return make_hypre_split_solver(name, settings);
+#else
+  return nullptr;
+#endif
 }
 
 }  // namespace sluice

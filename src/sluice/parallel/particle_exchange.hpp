@@ -4,11 +4,13 @@
 // every rank whose slab comes within the halo's depth of a particle gets a copy of it, a ghost,
 // which the model reads as a neighbour and never counts (its `owned_kind` is -1). Every field
 // travels, the model's own too, so a ghost is its owner's particle as the neighbour stage found
-// it.
+// it; a stage after it that changes a field a later one reads at the ghosts (MPS's pressure,
+// solved over the ranks) brings them up to date with refresh(), the halo plan's gather.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -94,6 +96,45 @@ class ParticleExchange {
     add_seconds(totals_.halo_seconds, [&] { take_ghosts(ps); });
     totals_.migrated += static_cast<double>(counts_.sent);
     totals_.ghosts += static_cast<double>(counts_.ghosts);
+  }
+
+  // The neighbour sort after the exchange reordered the set (its particle k was order[k] of
+  // the `old_size` before it): refresh()'s plan follows the particles.
+  void follow(const std::vector<std::uint32_t>& order, std::size_t old_size) {
+    constexpr std::uint32_t kDropped = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> now(old_size, kDropped);
+    for (std::size_t k = 0; k < order.size(); ++k) now[order[k]] = static_cast<std::uint32_t>(k);
+    for (auto* plan : {&sent_, &received_}) {
+      for (auto& indices : *plan) {
+        for (std::uint32_t& i : indices) i = now[i];
+      }
+    }
+  }
+
+  // Collective: each ghost's `fields` (arrays over the set, an entry a particle) set to its
+  // owner's values now, as the last exchange's plan copied it.
+  template <class... T>
+  void refresh(std::vector<T>&... fields) const {
+    // As ParticleSet::pack moves them: an entry's bytes (reals, integers, fixed-size vectors).
+    constexpr std::size_t bytes = (sizeof(T) + ...);
+    const auto at = [](auto& field, std::uint32_t i) {
+      return reinterpret_cast<unsigned char*>(field.data()) + sizeof(field[0]) * i;
+    };
+    std::vector<std::vector<unsigned char>> outgoing(sent_.size());
+    for (std::size_t r = 0; r < sent_.size(); ++r) {
+      outgoing[r].resize(sent_[r].size() * bytes);
+      unsigned char* out = outgoing[r].data();
+      for (const std::uint32_t i : sent_[r]) {
+        ((std::memcpy(out, at(fields, i), sizeof(T)), out += sizeof(T)), ...);
+      }
+    }
+    const std::vector<std::vector<unsigned char>> incoming = ranks_.exchange(outgoing);
+    for (std::size_t r = 0; r < received_.size(); ++r) {
+      const unsigned char* in = incoming[r].data();
+      for (const std::uint32_t i : received_[r]) {
+        ((std::memcpy(at(fields, i), in, sizeof(T)), in += sizeof(T)), ...);
+      }
+    }
   }
 
   const SlabDecomposition& slabs() const { return slabs_; }
@@ -199,10 +240,19 @@ class ParticleExchange {
         copies[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
       });
     }
-    counts_.ghosts = append(ps, ranks_.exchange(packed(ps, copies)));
+    const std::vector<std::vector<unsigned char>> incoming = ranks_.exchange(packed(ps, copies));
+    counts_.ghosts = append(ps, incoming);
     auto& owned = ps[owned_kind_];
     for (std::size_t i = before; i < ps.size(); ++i) owned[i] = -1;
     gone_.resize(ps.size(), false);
+    // refresh()'s plan: what went where, and where each rank's copies landed here.
+    sent_ = std::move(copies);
+    received_.assign(incoming.size(), {});
+    std::uint32_t next = static_cast<std::uint32_t>(before);
+    for (std::size_t r = 0; r < incoming.size(); ++r) {
+      received_[r].resize(incoming[r].size() / ps.bytes_per_particle());
+      for (std::uint32_t& i : received_[r]) i = next++;
+    }
   }
 
   std::vector<std::vector<unsigned char>> packed(
@@ -236,6 +286,9 @@ class ParticleExchange {
   ExchangeCounts counts_;
   ExchangeTotals totals_;
   std::vector<bool> gone_;
+  // The last take_ghosts' plan, by rank: this rank's particles copied to it, and the ghosts it
+  // sent here (indices into the set, which follow() keeps up with the neighbour sort).
+  std::vector<std::vector<std::uint32_t>> sent_, received_;
 };
 
 }  // namespace sluice

@@ -39,6 +39,7 @@ ModelEntry mac_entry() {
   // kept, and in the projection scheme the bodies take them: its own. With held loads a body held
   // by a contact is immobile to the projection and takes no load (docs/architecture.md).
   entry.schemes = {"projection", "held-loads"};
+  entry.one_rank_only = "its grid is not split over ranks yet";
   return entry;
 }
 

@@ -35,8 +35,10 @@ inline constexpr Real kMpsSkin = 0.2;
 template <int D>
 class MpsModel final : public ParticleFluid<D> {
  public:
+  // With `ranks` split, the pressure equation is split over them (the factory splits the
+  // particles before initialize()).
   MpsModel(const MpsParameters& parameters, const io::CaseConfig& config,
-           const BodyGeometry& bodies)
+           const BodyGeometry& bodies, const Communicator& ranks = Communicator::alone())
       : ParticleFluid<D>(
             config,
             (std::max(parameters.re_over_dx, parameters.laplacian_re_over_dx) + kMpsSkin) *
@@ -48,7 +50,7 @@ class MpsModel final : public ParticleFluid<D> {
         laplacian_weight_{parameters.laplacian_re_over_dx * config.spacing},
         lattice_(full_lattice_constants<D>(config.spacing, weight_.re)),
         laplacian_lattice_(full_lattice_constants<D>(config.spacing, laplacian_weight_.re)),
-        equation_(parameters.solver, parameters.solver_settings) {
+        equation_(parameters.solver, parameters.solver_settings, ranks) {
     assign_roles(config, bodies);
   }
 
@@ -104,12 +106,16 @@ class MpsModel final : public ParticleFluid<D> {
   }
 
   std::vector<std::pair<std::string, double>> counters() const override {
-    if (explicit_variant()) return {};
-    return {{"pressure_solves", static_cast<double>(solves_)},
-            {"pressure_iterations_per_solve",
-             solves_ > 0 ? static_cast<double>(iterations_) / static_cast<double>(solves_) : 0},
-            {"pressure_unknowns_per_solve",
-             solves_ > 0 ? static_cast<double>(unknowns_) / static_cast<double>(solves_) : 0}};
+    std::vector<std::pair<std::string, double>> out;
+    if (!explicit_variant()) {
+      out = {{"pressure_solves", static_cast<double>(solves_)},
+             {"pressure_iterations_per_solve",
+              solves_ > 0 ? static_cast<double>(iterations_) / static_cast<double>(solves_) : 0},
+             {"pressure_unknowns_per_solve",
+              solves_ > 0 ? static_cast<double>(unknowns_) / static_cast<double>(solves_) : 0}};
+    }
+    for (auto& entry : ParticleFluid<D>::counters()) out.push_back(std::move(entry));  // split
+    return out;
   }
 
   std::optional<std::string> check(const StepClock& clock) const override {
@@ -339,7 +345,10 @@ class MpsModel final : public ParticleFluid<D> {
         device_->assemble(dt, p_.source_relaxation, p_.compressibility, p_.pressure_memory);
       });
     }
-    equation_.assemble(inputs(dt));
+    const PressureEquationInputs<D> in = inputs(dt);
+    equation_.number_unknowns(in, this->counted_kinds());
+    this->refresh_ghosts(equation_.row_numbers());  // split: a ghost's row is its owner's
+    equation_.assemble_numbered(in);
   }
 
   void solve(const StepClock& clock) {
@@ -348,6 +357,7 @@ class MpsModel final : public ParticleFluid<D> {
       this->on_device([&] { solved = device_->solve(); });
     } else {
       solved = equation_.solve(this->state().particles.pressure);
+      this->refresh_ghosts(this->state().particles.pressure);  // split: the owners solved them
     }
     const PressureEquationReport& r = last_solve();
     ++solves_;
@@ -373,6 +383,7 @@ class MpsModel final : public ParticleFluid<D> {
     } else {
       exec::Default::for_each(this->state().particles.size(),
                               MpsStateEquation<D>{arrays(), stiffness, lattice_.n0});
+      this->refresh_ghosts(this->state().particles.pressure);  // split: as the owners have it
     }
     clamp_negative();
   }
@@ -391,6 +402,10 @@ class MpsModel final : public ParticleFluid<D> {
     exec::Default::for_each_balanced(n, MpsPressureCorrection<D>{a, operators(), dt / density_,
                                                                  p_.minimum_density * lattice_.n0});
     exec::Default::for_each(n, MpsAddVelocity<D>{a, dt});
+    // Split, the next prediction reads the ghosts' velocities and places as their owners moved
+    // them.
+    auto& ps = this->state().particles;
+    this->refresh_ghosts(ps.position, ps.velocity);
   }
 
   void measure_extremes() {
@@ -400,7 +415,7 @@ class MpsModel final : public ParticleFluid<D> {
     }
     const MpsArrays<D> a = arrays();
     max_speed_ = exec::Default::max_of(this->state().particles.size(),
-                                       FluidVectorNorm<D>{a.kind, a.velocity});
+                                       FluidVectorNorm<D>{this->counted_kinds(), a.velocity});
   }
 
   // The device run (model.device: emulated), from the host's particles as initialize() left

@@ -26,41 +26,73 @@
 //   one-sided Laplacian needs at rest, which the water under a lid cannot make up
 //   (docs/validation.md, B5).
 // Each row is assembled by one thread straight into the compressed sparse rows; the solve
-// starts from the last pressure.
+// starts from the last pressure. On several ranks each holds the rows of its own particles.
 #pragma once
 
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/mps/pressure_rows.hpp"
 #include "sluice/linear/sparse_solver.hpp"
+#include "sluice/parallel/communicator.hpp"
 
 namespace sluice {
 
 template <int D>
 class PressureEquation {
  public:
-  PressureEquation(const std::string& solver, const SolverSettings& settings)
-      : solver_(make_sparse_solver(solver, settings)) {
-    if (!solver_) throw std::invalid_argument("unknown sparse solver " + solver);
+  // With `ranks` split, the system is split over them by rows (a rank's rows are its own
+  // particles' unknowns) and solved by the split solver of that name (hypre's).
+  PressureEquation(const std::string& solver, const SolverSettings& settings,
+                   const Communicator& ranks = Communicator::alone())
+      : ranks_(ranks) {
+    if (ranks.split()) {
+      split_solver_ = make_split_solver(solver, settings);
+    } else {
+      solver_ = make_sparse_solver(solver, settings);
+    }
+    if (!solver_ && !split_solver_) throw std::invalid_argument("unknown sparse solver " + solver);
   }
 
+  // One rank alone: numbers every unknown and assembles their rows.
   void assemble(const PressureEquationInputs<D>& in) {
+    number_unknowns(in, nullptr);
+    assemble_numbered(in);
+  }
+
+  // Numbers the unknowns that `kinds` counts (null: every one; a ghost's kind is -1: its owner
+  // numbers it), in particle order, the ranks' one after another. A ghost's number is then its
+  // owner's to give it: row_numbers() (collective where split).
+  void number_unknowns(const PressureEquationInputs<D>& in, const std::int32_t* kinds) {
     const std::size_t n = in.particles;
-    // Unknowns numbered in particle order, so each row's columns come out sorted.
     row_of_.assign(n, -1);
-    int unknowns = 0;
+    particle_of_.clear();
     for (std::size_t i = 0; i < n; ++i) {
-      if (in.unknown(i)) row_of_[i] = unknowns++;
+      if ((kinds == nullptr || kinds[i] >= 0) && in.unknown(i)) particle_of_.push_back(i);
     }
-    particle_of_.resize(static_cast<std::size_t>(unknowns));
-    for (std::size_t i = 0; i < n; ++i) {
-      if (row_of_[i] >= 0) particle_of_[static_cast<std::size_t>(row_of_[i])] = i;
+    const double mine = static_cast<double>(particle_of_.size());
+    const std::vector<double> counts = ranks_.gather_all(std::span<const double>(&mine, 1));
+    first_row_ = 0;
+    global_unknowns_ = 0;
+    for (int r = 0; r < ranks_.size(); ++r) {
+      if (r < ranks_.rank()) first_row_ += static_cast<int>(counts[std::size_t(r)]);
+      global_unknowns_ += static_cast<std::size_t>(counts[std::size_t(r)]);
     }
+    for (std::size_t r = 0; r < particle_of_.size(); ++r)
+      row_of_[particle_of_[r]] = first_row_ + static_cast<int>(r);
+  }
+  // Each particle's row number in the whole system, -1 off the unknowns.
+  std::vector<int>& row_numbers() { return row_of_; }
+
+  // The rows of the unknowns numbered last (number_unknowns, and the ghosts' numbers).
+  void assemble_numbered(const PressureEquationInputs<D>& in) {
+    const int unknowns = static_cast<int>(particle_of_.size());
     // Pass 1: entries per row (the diagonal and the unknown neighbours in reach).
-    matrix_.resize(unknowns, unknowns);
+    matrix_.resize(unknowns, static_cast<Eigen::Index>(global_unknowns_));
     int* start = matrix_.outerIndexPtr();
     start[0] = 0;
     exec::Default::for_each_balanced(
@@ -84,12 +116,13 @@ class PressureEquation {
                                 in.pressure_memory ? (1 - in.relaxation) * compressibility : 0};
     exec::Default::for_each_balanced(particle_of_.size(), values);
     report_ = PressureEquationReport{};
-    report_.unknowns = particle_of_.size();
-    report_.entries = static_cast<std::size_t>(start[unknowns]);
+    report_.unknowns = global_unknowns_;
+    report_.entries = static_cast<std::size_t>(ranks_.sum(double(start[unknowns])));
   }
 
-  // Solves from the present `pressure` as the first guess and writes the result back, zero
-  // off the unknowns. False when the solver did not reach its tolerance.
+  // Solves from the present `pressure` as the first guess and writes the result back to the
+  // rows' particles, zero elsewhere (a ghost's is its owner's to give). False when the solver
+  // did not reach its tolerance.
   bool solve(std::vector<Real>& pressure) { return solve(pressure.data(), pressure.size()); }
   bool solve(Real* pressure, std::size_t n) {
     guess_.resize(static_cast<Eigen::Index>(particle_of_.size()));
@@ -97,12 +130,18 @@ class PressureEquation {
       guess_[static_cast<Eigen::Index>(r)] = pressure[particle_of_[r]];
     SolveReport solved;
     solved.converged = true;
-    if (!particle_of_.empty()) solved = solver_->solve(matrix_, rhs_, guess_);
+    if (global_unknowns_ > 0) {
+      solved = split_solver_ ? split_solver_->solve(matrix_, first_row_, rhs_, guess_)
+                             : solver_->solve(matrix_, rhs_, guess_);
+    }
     report_.iterations = solved.iterations;
     report_.relative_residual = solved.relative_residual;
     report_.converged = solved.converged;
-    exec::Default::for_each(
-        n, [&](std::size_t i) { pressure[i] = row_of_[i] >= 0 ? guess_[row_of_[i]] : 0; });
+    const int rows = static_cast<int>(particle_of_.size());
+    exec::Default::for_each(n, [&](std::size_t i) {
+      const int r = row_of_[i] - first_row_;
+      pressure[i] = row_of_[i] >= 0 && r < rows && r >= 0 ? guess_[r] : 0;
+    });
     return solved.converged;
   }
 
@@ -111,11 +150,15 @@ class PressureEquation {
   const Eigen::VectorXd& rhs() const { return rhs_; }
 
  private:
+  Communicator ranks_;
   std::unique_ptr<SparseSolver> solver_;
+  std::unique_ptr<SplitSolver> split_solver_;
   SparseRows matrix_;
   Eigen::VectorXd rhs_, guess_;
   std::vector<int> row_of_;
   std::vector<std::size_t> particle_of_;
+  int first_row_ = 0;
+  std::size_t global_unknowns_ = 0;
   PressureEquationReport report_;
 };
 

@@ -72,7 +72,9 @@ struct PressureRowCount {
   }
 };
 
-// Row r's values, from start[r] on, its columns in increasing order, and its right-hand side.
+// Row r's values, from start[r] on, and its right-hand side. Its columns are the unknowns' row
+// numbers (row_of[i] is r, or on several ranks the whole system's number of it), the diagonal
+// placed in their order: in increasing order where the unknowns are numbered in particle order.
 template <int D>
 struct PressureRowValues {
   PressureEquationInputs<D> in;
@@ -96,12 +98,12 @@ struct PressureRowValues {
       if (wall) source += c * in.density * in.wall_gravity[i].dot(op.position(i) - op.position(j));
       sum += c;
       if (row_of[j] < 0) return;  // p_j = 0 on the surface: only the diagonal sees it
-      if (diagonal < 0 && j > i) diagonal = k++;
+      if (diagonal < 0 && row_of[j] > row_of[i]) diagonal = k++;
       column[k] = row_of[j];
       value[k++] = -c;
     });
     if (diagonal < 0) diagonal = k++;
-    column[diagonal] = static_cast<int>(r);
+    column[diagonal] = row_of[i];
     if (wall) {
       value[diagonal] = sum;
       rhs[r] = source;
