@@ -315,7 +315,7 @@ class PenaltySphModel final : public ParticleFluid<D> {
       return;
     }
     auto& ps = this->state().particles;
-    // Walls and fixed solid layers stand still: gathered once.
+    // Walls and fixed solid layers stand still: gathered once (again where split cuts move).
     if (!solids_gathered_) gather_fixed_solids();
     // Split, a rank drifts its own fluid particles; its ghosts are taken anew after the drift.
     const std::int32_t* kinds = this->counted_kinds();
