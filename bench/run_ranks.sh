@@ -7,8 +7,8 @@
 # all alike. Prints the medians: wall seconds, particle-steps per second, the efficiency against
 # one rank of one thread, and a split run's seconds of waiting for the busier rank, of
 # migration, halo and balance. Options after END_TIME go to every run (another model:
-# --set model.name=mps).
-# usage: bench/run_ranks.sh [REPEAT] [END_TIME] [RUN OPTIONS...]
+# --set model.name=mps); SPACING sets the case's spacing (the weak runs' is finer by 2^(1/3)).
+# usage: [SPACING=S] bench/run_ranks.sh [REPEAT] [END_TIME] [RUN OPTIONS...]
 set -euo pipefail
 source "$(dirname "$0")/bench_setup.sh"
 repeat=${1:-3}
@@ -16,7 +16,8 @@ end=${2:-0.01}
 shift $(($# < 2 ? $# : 2))
 options=("$@")
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-spacing=$(sed -n 's/^spacing: *\([0-9.]*\).*/\1/p' cases/bench_dam_break_3d.yaml)
+spacing=${SPACING:-$(sed -n 's/^spacing: *\([0-9.]*\).*/\1/p' cases/bench_dam_break_3d.yaml)}
+options+=(--set spacing="$spacing")
 fine=$(/usr/bin/python3 -c "print($spacing / 2 ** (1 / 3))")
 for r in $(seq 1 "$repeat"); do
   OMP_NUM_THREADS=1 "$sluice" run cases/bench_dam_break_3d.yaml --end "$end" --threads 1 \
@@ -26,8 +27,8 @@ for r in $(seq 1 "$repeat"); do
   OMP_NUM_THREADS=1 mpirun -np 2 "$sluice" run cases/bench_dam_break_3d.yaml --end "$end" \
     --threads 1 --out "$work/out" --stats "$work/two_ranks_$r.json" "${options[@]}" > /dev/null 2>&1
   OMP_NUM_THREADS=1 mpirun -np 2 "$sluice" run cases/bench_dam_break_3d.yaml --end "$end" \
-    --threads 1 --set spacing="$fine" --out "$work/out" --stats "$work/two_ranks_twice_$r.json" \
-    "${options[@]}" > /dev/null 2>&1
+    --threads 1 --out "$work/out" --stats "$work/two_ranks_twice_$r.json" "${options[@]}" \
+    --set spacing="$fine" > /dev/null 2>&1
 done
 /usr/bin/python3 - "$work" "$repeat" <<'PY'
 import json, statistics, sys
