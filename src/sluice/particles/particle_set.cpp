@@ -10,10 +10,16 @@
 namespace sluice {
 
 namespace {
-// Gathers `field` through `order` (those it does not name go).
+// Gathers `field` through `order` (those it does not name go). The result keeps room for as
+// many as the field held: a split run's sort drops the last step's ghosts, and the next
+// exchange appends about as many again without reallocating every field (at 3.5 million
+// particles a rank, half the ghosts' time: docs/performance.md). One rank alone drops none,
+// and keeps no more.
 template <class T>
 void permute(std::vector<T>& field, const std::vector<std::uint32_t>& order) {
-  std::vector<T> sorted(order.size());
+  std::vector<T> sorted;
+  sorted.reserve(std::max(order.size(), field.size()));
+  sorted.resize(order.size());
   exec::Default::for_each(order.size(), [&](std::size_t k) { sorted[k] = field[order[k]]; });
   field.swap(sorted);
 }
