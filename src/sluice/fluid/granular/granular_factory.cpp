@@ -27,7 +27,9 @@ ModelEntry granular_entry() {
   // The emulated device's copy of the problem each solve (docs/performance.md).
   entry.size.device_bytes_per_element = [](int dimension) { return dimension == 2 ? 510 : 680; };
   entry.devices = {"cpu", "emulated"};
-  entry.one_rank_only = "its complementarity step solves the spheres and the bodies as one system, not split over ranks";
+  entry.one_rank_only =
+      "its complementarity step solves the spheres and the bodies as one system, not split over "
+      "ranks";
   return entry;
 }
 
