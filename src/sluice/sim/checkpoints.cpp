@@ -17,6 +17,11 @@ namespace fs = std::filesystem;
 constexpr std::string_view kPrefix = "step_";
 constexpr std::string_view kSuffix = ".ckpt";
 
+bool all_digits(const std::string& text) {
+  return !text.empty() &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // The step in a checkpoint's file name, or -1 for another file.
 long long step_of(const std::string& name) {
   if (name.size() <= kPrefix.size() + kSuffix.size() || !name.starts_with(kPrefix) ||
@@ -25,8 +30,7 @@ long long step_of(const std::string& name) {
   }
   const std::string digits =
       name.substr(kPrefix.size(), name.size() - kPrefix.size() - kSuffix.size());
-  if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
-    return -1;
+  if (!all_digits(digits)) return -1;
   return std::stoll(digits);
 }
 
@@ -138,9 +142,7 @@ int ranks_that_wrote(const std::string& root) {
     const auto of = name.find("_of_");
     if (entry.is_directory() && name.starts_with("rank_") && of != std::string::npos) {
       const std::string count = name.substr(of + 4);
-      if (!count.empty() &&
-          std::all_of(count.begin(), count.end(), [](char c) { return c >= '0' && c <= '9'; }))
-        return std::stoi(count);
+      if (all_digits(count)) return std::stoi(count);
     }
   }
   return 0;
