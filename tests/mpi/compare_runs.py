@@ -3,7 +3,8 @@
 table the first wrote (probes, energy, loads, each body's) must be in the second with the same
 header and rows, each value within TOLERANCE of the first's, relative to the largest magnitude
 of its column (a column of zeros: absolutely). The last frame of the second must be a .pvtp
-whose pieces hold as many particles as the first's last frame. Prints the largest relative
+whose pieces hold as many particles as the first's last frame (RANKS 1, a split run resumed
+on one rank: a frame that does). Prints the largest relative
 difference found, and exits 1 on any failure.
 
 usage: compare_runs.py ONE_RANK_OUT SPLIT_OUT RANKS TOLERANCE
@@ -85,6 +86,11 @@ def main():
         fail(f"over the tolerance {tolerance:g}")
 
     whole, joined = last_series_file(one), last_series_file(split)
+    if ranks == 1:  # a split run resumed on one rank
+        if points_in(joined) != points_in(whole):
+            fail(f"the last frame holds {points_in(joined)} particles, the one rank's {points_in(whole)}")
+        print(f"last frame: {points_in(joined)} particles, as on one rank")
+        return
     if not joined.endswith(".pvtp"):
         fail(f"the split run's last frame is {joined}, not a .pvtp")
     pieces = re.findall(r'Source="([^"]+)"', open(joined).read())

@@ -7,6 +7,7 @@
 // (coupling/) decides when bodies and fluid exchange.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 
 #include "sluice/core/stage.hpp"
@@ -37,6 +38,14 @@ class FluidSystem {
   // Checkpoints: writes, or reads back, everything the model carries from one step to the next
   // (core/state_archive.hpp); the model is one built from the same case.
   virtual void archive_state(StateArchive& a) = 0;
+  // Resuming a checkpoint written on `written_ranks` ranks, not this run's number (collective):
+  // the archive_state reads between the two are the writing ranks' pieces, which the model
+  // then splits anew over this run's ranks. Only a model that splits can.
+  virtual void begin_gathering(int written_ranks) {
+    throw std::logic_error(std::to_string(written_ranks) +
+                           " ranks' checkpoint: this model runs on one rank alone");
+  }
+  virtual void end_gathering() {}
 
   virtual FluidExchange& exchange() = 0;
   virtual const FluidObservation& observation() const = 0;

@@ -144,6 +144,9 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
   s.cells = CellList<D>(lo, hi, interaction_radius);
   s.cells.sort(s.particles.position, order);
   s.particles.reorder(order);
+  // On one rank too, so that a checkpoint has the same fields on any number of ranks (and
+  // resumes on another number).
+  owned_kind_ = s.particles.add_int_field({"owned_kind", "1", false});
 }
 
 template <int D>
@@ -161,8 +164,12 @@ template <int D>
 void ParticleFluid<D>::distribute(const Communicator& ranks, Real halo_depth) {
   if (device_) throw std::logic_error("distribute: the particles live on a device");
   ranks_ = ranks;
+  split_evenly(halo_depth);
+}
+
+template <int D>
+void ParticleFluid<D>::split_evenly(Real halo_depth) {
   auto& ps = state_.particles;
-  owned_kind_ = ps.add_int_field({"owned_kind", "1", false});
   const int axis = longest_horizontal_axis(state_.domain, D);
   // The first cuts share the work as the balance counts it.
   const BalancePolicy balance;
@@ -172,13 +179,68 @@ void ParticleFluid<D>::distribute(const Communicator& ranks, Real halo_depth) {
     work[i] = ps.is_fluid(i) ? 1.0 : balance.other_work;
   }
   exchange_ = std::make_unique<ParticleExchange<D>>(
-      ranks, balanced_slabs(coordinates, work, axis, ranks.size()), halo_depth, owned_kind_,
+      ranks_, balanced_slabs(coordinates, work, axis, ranks_.size()), halo_depth, owned_kind_,
       balance);
   exchange_->start(ps);
   const std::size_t before = ps.size();
   state_.cells.sort(ps.position, order_);
   ps.reorder(order_);
   exchange_->follow(order_, before);
+}
+
+template <int D>
+void ParticleFluid<D>::begin_gathering(int written_ranks) {
+  if (device_) throw std::logic_error("begin_gathering: the particles live on a device");
+  written_ranks_ = written_ranks;
+  gathered_pieces_ = 0;
+  gathered_.emplace();
+  gathered_->assign_fields(state_.particles, [](const FieldLabel&) { return false; });
+}
+
+template <int D>
+void ParticleFluid<D>::gather_piece(StateArchive& a) {
+  ParticleSet<D> piece;
+  piece.assign_fields(state_.particles, [](const FieldLabel&) { return false; });
+  a.section("particles");
+  piece.archive_state(a);
+  a(state_.body_point_acceleration);  // every rank's is the whole case's
+  CellList<D> cells = state_.cells;   // the piece's, drawn anew
+  cells.archive_state(a);
+  if (written_ranks_ > 1) {
+    a.section("ranks");
+    ParticleExchange<D>::skip_archived_state(a);
+  }
+  a.section("model");
+  gather_model(a, gathered_pieces_ == 0);
+  std::vector<std::uint32_t> own;
+  const auto& owned = piece[owned_kind_];
+  for (std::size_t i = 0; i < piece.size(); ++i) {
+    if (written_ranks_ == 1 || owned[i] >= 0) own.push_back(static_cast<std::uint32_t>(i));
+  }
+  std::vector<unsigned char> bytes;
+  piece.pack(own, bytes);
+  gathered_->unpack_append(bytes.data(), own.size());
+  ++gathered_pieces_;
+}
+
+template <int D>
+void ParticleFluid<D>::end_gathering() {
+  if (!gathered_ || gathered_pieces_ != written_ranks_)
+    throw std::logic_error("end_gathering: not every piece was read");
+  state_.particles = std::move(*gathered_);
+  gathered_.reset();
+  if (exchange_) {
+    split_evenly(exchange_->depth());
+  } else {
+    state_.cells.sort(state_.particles.position, order_);
+    state_.particles.reorder(order_);
+  }
+  redistributed();
+}
+
+template <int D>
+void ParticleFluid<D>::gather_model(StateArchive&, bool) {
+  throw std::logic_error("this model's checkpoints do not resume on another number of ranks");
 }
 
 template <int D>
@@ -368,6 +430,10 @@ FluidEnergy ParticleFluid<D>::energy() const {
 
 template <int D>
 void ParticleFluid<D>::archive_state(StateArchive& a) {
+  if (gathered_ && a.reading()) {
+    gather_piece(a);
+    return;
+  }
   if (!a.reading()) refresh_host();
   a.section("particles");
   state_.particles.archive_state(a);

@@ -75,6 +75,13 @@ class ParticleFluid : public FluidSystem,
   // this rank's own particles.
   void distribute(const Communicator& ranks, Real halo_depth);
   std::string decomposition() const override;
+  // Resuming a checkpoint written on another number of ranks (collective): between
+  // begin_gathering and end_gathering, archive_state reads one writing rank's piece at a time,
+  // keeps the particles that rank owned and hands the model's state to gather_model; then
+  // end_gathering splits the whole case anew over this run's ranks, as distribute() did, and
+  // the model rebuilds what indexes its particles (redistributed()).
+  void begin_gathering(int written_ranks) override;
+  void end_gathering() override;
 
   // Stages: the model's first stages; then, after the bodies' advance, the engine's neighbour
   // sort and the model's other stages.
@@ -106,6 +113,14 @@ class ParticleFluid : public FluidSystem,
  protected:
   // The model's state beyond its particle fields (archive_state).
   virtual void archive_model(StateArchive& a) = 0;
+  // Resuming on another number of ranks: reads one piece's archive_model state (the `first`
+  // piece's, or a later one's) and folds it into this rank's: a largest value over the
+  // writing ranks' is the largest of the pieces', a sum of their shares their sum (held by the
+  // first rank alone, where the ranks' counts are summed again). A model that never splits
+  // leaves it: its checkpoints are one rank's.
+  virtual void gather_model(StateArchive& a, bool first);
+  // After end_gathering reordered the particles: rebuilds what indexes them.
+  virtual void redistributed() {}
   // The model's stages around the neighbour sort.
   virtual void model_stages(StageList& before_neighbours, StageList& after_neighbours) = 0;
   // The fluid's force on every body particle (kind kBody), indexed by its body point, from the
@@ -210,6 +225,13 @@ class ParticleFluid : public FluidSystem,
   Communicator ranks_ = Communicator::alone();
   std::unique_ptr<ParticleExchange<D>> exchange_;
   FieldHandle<std::int32_t> owned_kind_;
+  // distribute()'s split of the whole case over the ranks, at the balance's first cuts.
+  void split_evenly(Real halo_depth);
+  // Between begin_gathering and end_gathering: the pieces' own particles, how many pieces were
+  // read and how many ranks wrote them.
+  void gather_piece(StateArchive& a);
+  std::optional<ParticleSet<D>> gathered_;
+  int gathered_pieces_ = 0, written_ranks_ = 1;
   // Of the state's particles, those this rank owns, with the fields for which keep(label)
   // holds (a frame, the guard's last good state).
   ParticleSet<D> owned_particles(bool (*keep)(const FieldLabel&)) const;

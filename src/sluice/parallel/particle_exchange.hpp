@@ -151,6 +151,13 @@ class ParticleExchange {
     a(cuts, since_balance_);
     if (a.reading()) slabs_ = SlabDecomposition(slabs_.axis(), std::move(cuts));
   }
+  // Reads past what archive_state wrote, keeping nothing (a checkpoint written on another
+  // number of ranks, whose cuts are drawn anew).
+  static void skip_archived_state(StateArchive& a) {
+    std::vector<double> cuts;
+    int since_balance = 0;
+    a(cuts, since_balance);
+  }
 
  private:
   // Sends away the particles this rank owns that left its slab, and takes in those that

@@ -34,6 +34,45 @@ long long step_of(const std::string& name) {
   return std::stoll(digits);
 }
 
+// The checkpoint files in `folder`, newest (highest step) first.
+std::vector<std::string> checkpoint_files(const std::string& folder) {
+  std::vector<std::pair<long long, std::string>> found;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    const long long step = step_of(entry.path().filename().string());
+    if (step >= 0) found.emplace_back(step, entry.path().string());
+  }
+  std::sort(found.begin(), found.end(), std::greater<>());
+  std::vector<std::string> paths;
+  for (auto& [step, path] : found) paths.push_back(std::move(path));
+  return paths;
+}
+
+// Where rank `rank` of a run on `ranks` keeps its checkpoints under OUT/checkpoints (`root`).
+std::string rank_folder(const std::string& root, int rank, int ranks) {
+  return ranks > 1 ? fmt::format("{}/rank_{}_of_{}", root, rank, ranks) : root;
+}
+
+// The numbers of ranks whose checkpoints are in OUT/checkpoints (`root`), ascending: K for
+// folders rank_R_of_K that hold one, 1 for checkpoints in the root itself.
+std::vector<int> rank_counts_that_wrote(const std::string& root) {
+  std::vector<int> counts;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(root, error)) {
+    const std::string name = entry.path().filename().string();
+    if (step_of(name) >= 0) counts.push_back(1);
+    const auto of = name.find("_of_");
+    if (entry.is_directory() && name.starts_with("rank_") && of != std::string::npos &&
+        !checkpoint_files(entry.path().string()).empty()) {
+      const std::string count = name.substr(of + 4);
+      if (all_digits(count)) counts.push_back(std::stoi(count));
+    }
+  }
+  std::sort(counts.begin(), counts.end());
+  counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+  return counts;
+}
+
 }  // namespace
 
 CheckpointFolder::CheckpointFolder(const std::string& out_dir, const Communicator& ranks)
@@ -43,16 +82,18 @@ CheckpointFolder::CheckpointFolder(const std::string& out_dir, const Communicato
               (ranks.split() ? fmt::format("/rank_{}_of_{}", ranks.rank(), ranks.size()) : "")) {}
 
 std::vector<std::string> CheckpointFolder::files() const {
-  std::vector<std::pair<long long, std::string>> found;
+  return checkpoint_files(folder_);
+}
+
+void CheckpointFolder::remove_other_counts() const {
   std::error_code error;
-  for (const auto& entry : fs::directory_iterator(folder_, error)) {
-    const long long step = step_of(entry.path().filename().string());
-    if (step >= 0) found.emplace_back(step, entry.path().string());
+  for (const auto& entry : fs::directory_iterator(root_, error)) {
+    const std::string name = entry.path().filename().string();
+    if (ranks_ > 1 && step_of(name) >= 0) fs::remove(entry.path(), error);
+    if (entry.is_directory() && name.starts_with("rank_") &&
+        !name.ends_with(fmt::format("_of_{}", ranks_)))
+      fs::remove_all(entry.path(), error);
   }
-  std::sort(found.begin(), found.end(), std::greater<>());
-  std::vector<std::string> paths;
-  for (auto& [step, path] : found) paths.push_back(std::move(path));
-  return paths;
 }
 
 void CheckpointFolder::clear() const {
@@ -132,34 +173,8 @@ std::optional<io::Checkpoint> find_newest(const std::vector<std::string>& files,
   return std::nullopt;
 }
 
-// How many ranks wrote the checkpoints in OUT/checkpoints (`root`): K for folders
-// rank_R_of_K, 1 for checkpoints in the root itself, 0 for none.
-int ranks_that_wrote(const std::string& root) {
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(root, error)) {
-    const std::string name = entry.path().filename().string();
-    if (step_of(name) >= 0) return 1;
-    const auto of = name.find("_of_");
-    if (entry.is_directory() && name.starts_with("rank_") && of != std::string::npos) {
-      const std::string count = name.substr(of + 4);
-      if (all_digits(count)) return std::stoi(count);
-    }
-  }
-  return 0;
-}
-
 void refuse_if_empty(const CheckpointFolder& folder, const std::vector<std::string>& files) {
   if (!files.empty()) return;
-  const int wrote = ranks_that_wrote(folder.root());
-  if (wrote > 0) {
-    throw InputError(
-        folder.path(), 0, "",
-        fmt::format("no checkpoint to resume from on {}: the run's checkpoints were "
-                    "written on {} (resume it on as many: {})",
-                    folder.ranks() == 1 ? "one rank" : fmt::format("{} ranks", folder.ranks()),
-                    wrote == 1 ? "one rank" : fmt::format("{} ranks", wrote),
-                    wrote == 1 ? "without mpirun" : fmt::format("mpirun -np {}", wrote)));
-  }
   throw InputError(folder.path(), 0, "",
                    "no checkpoint to resume from (the case's checkpoint_interval turns them on)");
 }
@@ -202,6 +217,40 @@ io::Checkpoint newest_checkpoint_of_every_rank(const CheckpointFolder& folder,
     if (ranks.min(held_here ? 1.0 : 0.0) == 1.0) return std::move(*mine);
     if (held_here) mine = find_newest(files, expected, warn, (long long)agreed - 1);
   }
+}
+
+std::vector<io::Checkpoint> pieces_written_on_another_count(
+    const CheckpointFolder& folder, const io::CheckpointHeader& expected,
+    const std::function<void(const std::string&)>& warn) {
+  if (!folder.files().empty()) return {};
+  std::vector<int> counts = rank_counts_that_wrote(folder.root());
+  std::erase(counts, folder.ranks());
+  if (counts.empty()) return {};
+  if (counts.size() > 1) {
+    throw InputError(folder.root(), 0, "",
+                     fmt::format("cannot resume: the folder holds checkpoints of runs on {} "
+                                 "ranks; remove all but one run's rank_R_of_N folders",
+                                 fmt::join(counts, ", ")));
+  }
+  const int wrote = counts.front();
+  std::vector<std::vector<std::string>> files;
+  for (int r = 0; r < wrote; ++r)
+    files.push_back(checkpoint_files(rank_folder(folder.root(), r, wrote)));
+  // The newest step of the first piece's that every piece holds whole.
+  for (const std::string& path : files.front()) {
+    const long long step = step_of(fs::path(path).filename().string());
+    std::vector<io::Checkpoint> pieces;
+    for (const auto& piece_files : files) {
+      std::optional<io::Checkpoint> piece = find_newest(piece_files, expected, warn, step);
+      if (!piece || piece->header.step != step) break;
+      pieces.push_back(std::move(*piece));
+    }
+    if (pieces.size() == files.size()) return pieces;
+  }
+  throw InputError(folder.root(), 0, "",
+                   fmt::format("no checkpoint of one step reads back whole on each of the {} "
+                               "ranks that wrote them; cannot resume",
+                               wrote));
 }
 
 }  // namespace sluice

@@ -20,8 +20,8 @@ inline constexpr std::size_t kCheckpointsKept = 2;
 
 class CheckpointFolder {
  public:
-  // OUT/checkpoints; on several ranks, each rank's OUT/checkpoints/rank_R_of_N (a run resumes
-  // on as many ranks as wrote it, and is told so on another number).
+  // OUT/checkpoints; on several ranks, each rank's OUT/checkpoints/rank_R_of_N (a resume on
+  // another number of ranks reads every writing rank's: pieces_written_on_another_count).
   explicit CheckpointFolder(const std::string& out_dir, const Communicator& ranks = {});
 
   const std::string& path() const { return folder_; }
@@ -35,6 +35,9 @@ class CheckpointFolder {
   // Removes every checkpoint, every rank's too: a new run into the folder must not leave an
   // older run's to be resumed (or to outrank its own). The first rank alone calls it.
   void clear() const;
+  // Removes the checkpoints of runs on another number of ranks than this one's (those a resume
+  // on this number split anew, once this run holds its own). The first rank alone calls it.
+  void remove_other_counts() const;
 
  private:
   int ranks_;
@@ -61,5 +64,15 @@ io::Checkpoint newest_checkpoint_of_every_rank(const CheckpointFolder& folder,
                                                const io::CheckpointHeader& expected,
                                                const std::function<void(const std::string&)>& warn,
                                                const Communicator& ranks);
+
+// A run resumed on another number of ranks than wrote its checkpoints (the folder holds
+// none of this run's number): each writing rank's piece of the newest step that every one of
+// them holds whole, the first rank's first; every rank of this run reads them all. None where
+// the folder holds this run's own (newest_checkpoint_of_every_rank reads those) or no
+// checkpoint at all. Throws InputError where no step reads back whole on every writing rank,
+// or checkpoints of several numbers of ranks are there.
+std::vector<io::Checkpoint> pieces_written_on_another_count(
+    const CheckpointFolder& folder, const io::CheckpointHeader& expected,
+    const std::function<void(const std::string&)>& warn);
 
 }  // namespace sluice

@@ -60,6 +60,36 @@ void archive_run(StateArchive& a, RunSchedule& schedule, Simulation<D>& sim, Fra
   if (body_output != nullptr) body_output->archive_state(a);
 }
 
+// "one rank", "3 ranks".
+std::string ranks_named(std::size_t ranks) {
+  return ranks == 1 ? "one rank" : fmt::format("{} ranks", ranks);
+}
+
+// Resumes from `pieces`, each writing rank's checkpoint of one step, on another number of ranks:
+// the parts every rank held alike (schedule, bodies, frames' count) from any piece; the fluid
+// gathers each piece's particles and splits them anew; the first rank's files (probes, bodies,
+// the series), which only the first piece holds, are the first rank's to read. The first piece
+// is read last, so that what it holds is what stands.
+template <int D>
+void resume_redistributed(const std::vector<io::Checkpoint>& pieces, RunSchedule& schedule,
+                          Simulation<D>& sim, FrameOutput& frames, Probes& probes,
+                          BodyOutput* body_output) {
+  sim.fluid().begin_gathering(static_cast<int>(pieces.size()));
+  for (std::size_t k = 1; k <= pieces.size(); ++k) {
+    const bool first_piece = k == pieces.size();
+    StateArchive archive(pieces[k % pieces.size()].state);
+    if (first_piece && body_output != nullptr) {
+      archive_run(archive, schedule, sim, frames, probes, body_output);
+      archive.finish();
+    } else {
+      schedule.archive_state(archive);
+      sim.archive_state(archive);
+      if (first_piece) frames.archive_state(archive);  // the count alone, off the first rank
+    }
+  }
+  sim.fluid().end_gathering();
+}
+
 template <int D>
 RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   // Build (and so validate) everything before creating the output directory: bad input
@@ -77,14 +107,19 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   const CheckpointFolder checkpoint_folder(options.out_dir, ranks);
   const io::CheckpointHeader identity = checkpoint_header(config, D);
   std::optional<io::Checkpoint> resumed;
+  // A checkpoint written on another number of ranks: every writing rank's piece.
+  std::vector<io::Checkpoint> pieces;
   RunSchedule schedule;
   if (options.resume) {
-    resumed = newest_checkpoint_of_every_rank(
-        checkpoint_folder, identity,
-        [&](const std::string& warning) {
-          if (!options.quiet) fmt::print(stderr, "warning: {}\n", warning);  // each rank's own
-        },
-        ranks);
+    const auto warn = [&](const std::string& warning) {
+      if (!options.quiet) fmt::print(stderr, "warning: {}\n", warning);  // each rank's own
+    };
+    pieces = pieces_written_on_another_count(checkpoint_folder, identity, warn);
+    if (pieces.empty()) {
+      resumed = newest_checkpoint_of_every_rank(checkpoint_folder, identity, warn, ranks);
+    } else {
+      resumed = pieces.front();
+    }
     if (resumed->header.time >= end_time * (1 - 1e-12)) {
       throw InputError(checkpoint_folder.path(), 0, "",
                        fmt::format("the run already reached t = {:.6g} s, its end time is {:.6g} "
@@ -109,7 +144,10 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
                           start);
     }
     probes.emplace(config.probes, first_rank ? options.out_dir + "/probes.csv" : "", start);
-    if (resumed) {
+    if (!pieces.empty()) {
+      resume_redistributed(pieces, schedule, sim, frames, *probes,
+                           body_output ? &*body_output : nullptr);
+    } else if (resumed) {
       StateArchive archive(resumed->state);
       archive_run(archive, schedule, sim, frames, *probes, body_output ? &*body_output : nullptr);
       archive.finish();
@@ -148,8 +186,12 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
                sim.fluid().describe());
     if (!decomposition.empty()) fmt::print(stderr, "  {}\n", decomposition);
     if (resumed) {
-      fmt::print(stderr, "  resuming from {} at t = {:.6g} s (step {}) to t = {:.6g} s\n",
-                 resumed->path, sim.time(), first_step, end_time);
+      fmt::print(stderr, "  resuming from {} at t = {:.6g} s (step {}) to t = {:.6g} s{}\n",
+                 resumed->path, sim.time(), first_step, end_time,
+                 pieces.empty()
+                     ? ""
+                     : fmt::format(", written on {}, split anew over {}",
+                                   ranks_named(pieces.size()), ranks_named(ranks.size())));
     } else {
       fmt::print(stderr,
                  "  first time step {:.3g} s, limited by {}: about {:.3g} steps to t = "
@@ -190,6 +232,12 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
       header.time = sim.time();
       header.step = sim.clock().step;
       checkpoint_folder.write(header, archive.bytes());
+      // Resumed on another number of ranks: once every rank holds its own checkpoint, the
+      // ones it resumed from go (a later resume must not find two runs' checkpoints).
+      if (!pieces.empty() && summary.checkpoints == 0) {
+        ranks.barrier();
+        if (first_rank) checkpoint_folder.remove_other_counts();
+      }
     });
     ++summary.checkpoints;
   };

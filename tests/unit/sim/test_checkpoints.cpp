@@ -3,6 +3,7 @@
 // version.
 #include "sluice/sim/checkpoints.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -76,6 +77,41 @@ TEST(CheckpointFolder, NewestNoLaterThanAStep) {
   // One rank alone: its own newest.
   EXPECT_EQ(newest_checkpoint_of_every_rank(folder, h, no_warning, Communicator::alone()).state,
             "newer");
+}
+
+// A run resumed on another number of ranks reads every writing rank's piece of the newest step
+// that all of them hold whole; its own checkpoints, once there, come first.
+TEST(CheckpointFolder, PiecesWrittenOnAnotherNumberOfRanks) {
+  ScratchDir out("checkpoints");
+  const io::CheckpointHeader h = checkpoint_header(small_case(), 2);
+  const std::filesystem::path root = out.path() / "checkpoints";
+  const auto write_piece = [&](int rank, int ranks, long step) {
+    const std::filesystem::path folder = root / fmt::format("rank_{}_of_{}", rank, ranks);
+    std::filesystem::create_directories(folder);
+    io::write_checkpoint((folder / fmt::format("step_{:010d}.ckpt", step)).string(),
+                         at_step(h, step), fmt::format("rank {} step {}", rank, step));
+  };
+  const CheckpointFolder one_rank(out.path().string());
+  const auto no_warning = [](const std::string& w) { ADD_FAILURE() << w; };
+  write_piece(0, 2, 10);  // rank 1 holds none yet
+  EXPECT_THROW(pieces_written_on_another_count(one_rank, h, no_warning), InputError);
+  write_piece(1, 2, 10);
+  write_piece(0, 2, 20);  // rank 1's step 20 was cut short
+  const std::vector<io::Checkpoint> pieces =
+      pieces_written_on_another_count(one_rank, h, no_warning);
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_EQ(pieces[0].state, "rank 0 step 10");
+  EXPECT_EQ(pieces[1].state, "rank 1 step 10");
+
+  write_piece(0, 3, 30);  // a second run's, on 3 ranks
+  EXPECT_THROW(pieces_written_on_another_count(one_rank, h, no_warning), InputError);
+
+  one_rank.write(at_step(h, 40), "one rank's own");
+  EXPECT_TRUE(pieces_written_on_another_count(one_rank, h, no_warning).empty());
+  one_rank.remove_other_counts();
+  EXPECT_FALSE(std::filesystem::exists(root / "rank_0_of_2"));
+  EXPECT_FALSE(std::filesystem::exists(root / "rank_0_of_3"));
+  EXPECT_EQ(newest_checkpoint(one_rank, h, no_warning).state, "one rank's own");
 }
 
 // The InputError message of resuming `folder` as `expected` ("" if it resumes).

@@ -147,6 +147,20 @@ class MpsModel final : public ParticleFluid<D> {
       device_->upload_neighbours(neighbours_.starts(), neighbours_.indices());
     a(max_speed_, failure_, solves_, iterations_, unknowns_);
   }
+  // The solves' counts are the whole run's on every rank; the list is drawn anew.
+  void gather_model(StateArchive& a, bool first) override {
+    NeighbourList<D> piece_list;
+    piece_list.archive_state(a);
+    Real speed = 0;
+    std::optional<std::string> failure;
+    a(speed, failure, solves_, iterations_, unknowns_);
+    max_speed_ = first ? speed : std::max(max_speed_, speed);
+    if (first) failure_.reset();
+    if (!failure_) failure_ = failure;
+  }
+  // The next step's prediction reads the last step's list: the same neighbours, drawn here from
+  // where the particles stand (a checkpoint on as many ranks keeps the list itself).
+  void redistributed() override { build_neighbours(); }
 
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(

@@ -180,6 +180,33 @@ class PenaltySphModel final : public ParticleFluid<D> {
     a(steps_, fluid_steps_, contacts_, crossings_, substeps_, force_sum_, peak_force_);
     if (a.reading()) solids_gathered_ = false;  // gathered again at the next step
   }
+  // The ranks' counts and their shares of the bodies' pressure forces add up over the ranks:
+  // the first rank holds the pieces' sums.
+  void gather_model(StateArchive& a, bool first) override {
+    Real speed = 0, acceleration = 0;
+    std::vector<Vec<D>> pressure_force;
+    long contacts = 0, crossings = 0, substeps = 0;
+    double force_sum = 0, peak_force = 0;
+    a(speed, acceleration, pressure_force);
+    a(steps_, fluid_steps_, contacts, crossings, substeps, force_sum, peak_force);
+    if (first) {
+      body_pressure_force_.assign(pressure_force.size(), Vec<D>::Zero());
+      contacts_ = crossings_ = substeps_ = 0;
+      force_sum_ = 0;
+    }
+    max_speed_ = first ? speed : std::max(max_speed_, speed);
+    max_acceleration_ = first ? acceleration : std::max(max_acceleration_, acceleration);
+    peak_force_ = first ? peak_force : std::max(peak_force_, peak_force);
+    if (this->ranks().rank() == 0) {
+      for (std::size_t k = 0; k < pressure_force.size(); ++k)
+        body_pressure_force_[k] += pressure_force[k];
+      contacts_ += contacts;
+      crossings_ += crossings;
+      substeps_ += substeps;
+      force_sum_ += force_sum;
+    }
+    solids_gathered_ = false;
+  }
 
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(make_stage<const StepClock>("kick_drift",

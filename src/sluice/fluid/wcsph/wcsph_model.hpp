@@ -70,6 +70,12 @@ class WcsphModel final : public ParticleFluid<D> {
   }
 
   void archive_model(StateArchive& a) override { a(max_speed_, max_acceleration_); }
+  void gather_model(StateArchive& a, bool first) override {
+    Real speed = 0, acceleration = 0;
+    a(speed, acceleration);
+    max_speed_ = first ? speed : std::max(max_speed_, speed);
+    max_acceleration_ = first ? acceleration : std::max(max_acceleration_, acceleration);
+  }
 
   void archive_state(StateArchive& a) override {
     Base::archive_state(a);  // on a device, uploads what it read
