@@ -107,8 +107,10 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   const CheckpointFolder checkpoint_folder(options.out_dir, ranks);
   const io::CheckpointHeader identity = checkpoint_header(config, D);
   std::optional<io::Checkpoint> resumed;
-  // A checkpoint written on another number of ranks: every writing rank's piece.
+  // A checkpoint written on another number of ranks: every writing rank's piece (given back
+  // once read), and how many ranks wrote them.
   std::vector<io::Checkpoint> pieces;
+  std::size_t written_ranks = 0;
   RunSchedule schedule;
   if (options.resume) {
     const auto warn = [&](const std::string& warning) {
@@ -119,6 +121,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
       resumed = newest_checkpoint_of_every_rank(checkpoint_folder, identity, warn, ranks);
     } else {
       resumed = pieces.front();
+      written_ranks = pieces.size();
     }
     if (resumed->header.time >= end_time * (1 - 1e-12)) {
       throw InputError(checkpoint_folder.path(), 0, "",
@@ -147,6 +150,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     if (!pieces.empty()) {
       resume_redistributed(pieces, schedule, sim, frames, *probes,
                            body_output ? &*body_output : nullptr);
+      pieces = {};
     } else if (resumed) {
       StateArchive archive(resumed->state);
       archive_run(archive, schedule, sim, frames, *probes, body_output ? &*body_output : nullptr);
@@ -188,10 +192,10 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
     if (resumed) {
       fmt::print(stderr, "  resuming from {} at t = {:.6g} s (step {}) to t = {:.6g} s{}\n",
                  resumed->path, sim.time(), first_step, end_time,
-                 pieces.empty()
+                 written_ranks == 0
                      ? ""
                      : fmt::format(", written on {}, split anew over {}",
-                                   ranks_named(pieces.size()), ranks_named(ranks.size())));
+                                   ranks_named(written_ranks), ranks_named(ranks.size())));
     } else {
       fmt::print(stderr,
                  "  first time step {:.3g} s, limited by {}: about {:.3g} steps to t = "
@@ -234,7 +238,7 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
       checkpoint_folder.write(header, archive.bytes());
       // Resumed on another number of ranks: once every rank holds its own checkpoint, the
       // ones it resumed from go (a later resume must not find two runs' checkpoints).
-      if (!pieces.empty() && summary.checkpoints == 0) {
+      if (written_ranks > 0 && summary.checkpoints == 0) {
         ranks.barrier();
         if (first_rank) checkpoint_folder.remove_other_counts();
       }
