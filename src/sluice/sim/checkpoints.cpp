@@ -78,8 +78,7 @@ std::vector<int> rank_counts_that_wrote(const std::string& root) {
 CheckpointFolder::CheckpointFolder(const std::string& out_dir, const Communicator& ranks)
     : ranks_(ranks.size()),
       root_(out_dir + "/checkpoints"),
-      folder_(root_ +
-              (ranks.split() ? fmt::format("/rank_{}_of_{}", ranks.rank(), ranks.size()) : "")) {}
+      folder_(rank_folder(root_, ranks.rank(), ranks.size())) {}
 
 std::vector<std::string> CheckpointFolder::files() const {
   return checkpoint_files(folder_);
