@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev libspdlog-dev libomp-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libhypre-dev libopenmpi-dev openmpi-bin zlib1g-dev
+  libtrilinos-zoltan-dev
   clang-format clang libclang-rt-14-dev
   python3 python3-vtk9 python3-numpy python3-matplotlib
 )

@@ -23,7 +23,7 @@ for ranks in $rank_counts; do
     { echo "FAIL: the run on $ranks ranks: $(tail -n 5 "$split.log")"; exit 1; }
   grep -q "threads on each of $ranks ranks" "$split.log" ||
     { echo "FAIL: the run's first line does not name its $ranks ranks"; exit 1; }
-  grep -q "$ranks slabs along" "$split.log" ||
+  grep -Eq "$ranks (slabs along|boxes by)" "$split.log" ||
     { echo "FAIL: the run on $ranks ranks does not say how it split the domain"; exit 1; }
   echo "$ranks ranks: $(grep -o '"fluid_counters": {[^}]*}' "$split.json")"
   balances=$(grep -o '"balances": [0-9]*' "$split.json" | grep -o '[0-9]*$')

@@ -8,6 +8,7 @@
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/geometry/sampling.hpp"
+#include "sluice/parallel/rcb_partition.hpp"
 
 namespace sluice {
 
@@ -62,7 +63,14 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
       body_points_(config.has_fluid() ? bodies.points_under_surface(std::max(
                                             wall_layers(interaction_radius, config.spacing), 1))
                                       : bodies.surface_points()),
-      body_count_(bodies.body_count()) {
+      body_count_(bodies.body_count()),
+      rcb_(config.ranks.partition == "rcb") {
+  if (rcb_ && !rcb_offered()) {
+    const auto& [file, line] = config.ranks.partition_place;
+    throw InputError(file, line, "ranks.partition",
+                     "rcb is Zoltan's, which this build lacks (configure with "
+                     "-DSLUICE_WITH_ZOLTAN=ON and libtrilinos-zoltan-dev); choose slabs");
+  }
   for (std::size_t w = 0; w < config.walls.size(); ++w) {
     if (config.walls[w].surface_velocity.norm() > 0) {
       throw InputError(config.file(), config.walls[w].line,
@@ -170,17 +178,31 @@ void ParticleFluid<D>::distribute(const Communicator& ranks, Real halo_depth) {
 template <int D>
 void ParticleFluid<D>::split_evenly(Real halo_depth) {
   auto& ps = state_.particles;
-  const int axis = longest_horizontal_axis(state_.domain, D);
-  // The first cuts share the work as the balance counts it.
+  // The first regions share the work as the balance counts it.
   const BalancePolicy balance;
-  std::vector<double> coordinates(ps.size()), work(ps.size());
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    coordinates[i] = ps.position[i][axis];
-    work[i] = ps.is_fluid(i) ? 1.0 : balance.other_work;
+  const auto work_of = [&](std::size_t i) { return ps.is_fluid(i) ? 1.0 : balance.other_work; };
+  Decomposition regions;
+  if (rcb_) {
+    // Every rank holds the whole case: each hands Zoltan every size()-th particle, so that it
+    // sees each once.
+    std::vector<double> points, work;
+    const auto ranks = static_cast<std::size_t>(ranks_.size());
+    for (std::size_t i = static_cast<std::size_t>(ranks_.rank()); i < ps.size(); i += ranks) {
+      for (int a = 0; a < D; ++a) points.push_back(ps.position[i][a]);
+      work.push_back(work_of(i));
+    }
+    regions = rcb_boxes(ranks_, D, points, work);
+  } else {
+    const int axis = longest_horizontal_axis(state_.domain, D);
+    std::vector<double> coordinates(ps.size()), work(ps.size());
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      coordinates[i] = ps.position[i][axis];
+      work[i] = work_of(i);
+    }
+    regions = Decomposition(balanced_slabs(coordinates, work, axis, ranks_.size()));
   }
-  exchange_ = std::make_unique<ParticleExchange<D>>(
-      ranks_, balanced_slabs(coordinates, work, axis, ranks_.size()), halo_depth, owned_kind_,
-      balance);
+  exchange_ = std::make_unique<ParticleExchange<D>>(ranks_, std::move(regions), halo_depth,
+                                                    owned_kind_, balance);
   exchange_->start(ps);
   const std::size_t before = ps.size();
   state_.cells.sort(ps.position, order_);
@@ -246,8 +268,9 @@ void ParticleFluid<D>::gather_model(StateArchive&, bool) {
 template <int D>
 std::string ParticleFluid<D>::decomposition() const {
   if (!exchange_) return {};
-  return fmt::format("{} ranks: {}, ghosts within {:.4g} m of a slab", ranks_.size(),
-                     exchange_->slabs().describe(), exchange_->depth());
+  const Decomposition& regions = exchange_->regions();
+  return fmt::format("{} ranks: {}, ghosts within {:.4g} m of a {}", ranks_.size(),
+                     regions.describe(), exchange_->depth(), regions.is_slabs() ? "slab" : "box");
 }
 
 template <int D>

@@ -69,8 +69,9 @@ class ParticleFluid : public FluidSystem,
 
   // From here on the particles are split over `ranks` (called before initialize(), on every
   // rank, each of which built the whole case): slabs along the domain's longest horizontal
-  // axis with an equal share of the particles each; every rank keeps its own and, as ghosts,
-  // copies of the others' within `halo_depth` of its slab, taken anew at each neighbour stage.
+  // axis, or the boxes of Zoltan's RCB where the case's `ranks.partition` says rcb, with an
+  // equal share of the particles' work each; every rank keeps its own and, as ghosts,
+  // copies of the others' within `halo_depth` of its region, taken anew at each neighbour stage.
   // Counts, sums, probes, loads and the check are then over the run's ranks; a frame holds
   // this rank's own particles.
   void distribute(const Communicator& ranks, Real halo_depth);
@@ -225,6 +226,7 @@ class ParticleFluid : public FluidSystem,
   Communicator ranks_ = Communicator::alone();
   std::unique_ptr<ParticleExchange<D>> exchange_;
   FieldHandle<std::int32_t> owned_kind_;
+  bool rcb_ = false;  // the regions: Zoltan's RCB boxes, not slabs
   // distribute()'s split of the whole case over the ranks, at the balance's first cuts.
   void split_evenly(Real halo_depth);
   // Between begin_gathering and end_gathering: the pieces' own particles, how many pieces were

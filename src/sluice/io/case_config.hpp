@@ -114,6 +114,14 @@ struct CompareEntry {
   int line = 0;
 };
 
+// How a run on several ranks (mpirun) splits the domain: `slabs` along the longest horizontal
+// axis, moved by shift balancing, or `rcb`, Zoltan's recursive coordinate bisection into one box
+// a rank (a build with Zoltan). One rank ignores it.
+struct RanksConfig {
+  std::string partition = "slabs";
+  std::pair<std::string, int> partition_place;  // file (or --set) and line of the key
+};
+
 struct CaseConfig {
   std::shared_ptr<const YamlSource> source;  // file name and --set overrides
   std::string name;
@@ -132,6 +140,7 @@ struct CaseConfig {
   ContactConfig contact;
   CouplingConfig coupling;
   std::vector<JointConfig> joints;
+  RanksConfig ranks;
   double body_interval = 0;        // time between rows of OUT/bodies/NAME.csv
   double checkpoint_interval = 0;  // simulated time between checkpoints; 0: none
   // The case as read, with its --set overrides, less the keys a resumed run may change

@@ -246,6 +246,13 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
     }
     coupling.finish();
   }
+  if (top.has("ranks")) {
+    MapReader ranks = top.map("ranks");
+    c.ranks.partition =
+        ranks.optional_choice("partition", c.ranks.partition, "partition", {"slabs", "rcb"});
+    c.ranks.partition_place = ranks.place_of("partition");
+    ranks.finish();
+  }
   // A case of bodies alone needs no fluid and no model.
   if (top.has("fluid") || c.bodies.empty()) c.fluid = read_fluid(top.map("fluid"), c);
 

@@ -1,10 +1,10 @@
 // The particles' traffic between ranks at each step's neighbour stage, in the shape of Cabana's
 // distributor and halo plans: the ghosts of the last step go (with the neighbour sort); the
-// particles that left this rank's slab go to the rank whose slab they entered (migration); then
-// every rank whose slab comes within the halo's depth of a particle gets a copy of it, a ghost,
-// which the model reads as a neighbour and never counts (its `owned_kind` is -1). Every field
-// travels, the model's own too, so a ghost is its owner's particle as the neighbour stage found
-// it; a stage after it that changes a field a later one reads at the ghosts (MPS's pressure,
+// particles that left this rank's region go to the rank whose region they entered (migration);
+// then every rank whose region comes within the halo's depth of a particle gets a copy of it, a
+// ghost, which the model reads as a neighbour and never counts (its `owned_kind` is -1). Every
+// field travels, the model's own too, so a ghost is its owner's particle as the neighbour stage
+// found it; a stage after it that changes a field a later one reads at the ghosts (MPS's pressure,
 // solved over the ranks) brings them up to date with refresh(), the halo plan's gather.
 #pragma once
 
@@ -17,7 +17,8 @@
 #include "sluice/core/stage_timer.hpp"
 #include "sluice/core/state_archive.hpp"
 #include "sluice/parallel/communicator.hpp"
-#include "sluice/parallel/slab_decomposition.hpp"
+#include "sluice/parallel/decomposition.hpp"
+#include "sluice/parallel/rcb_partition.hpp"
 #include "sluice/particles/particle_set.hpp"
 
 namespace sluice {
@@ -39,10 +40,11 @@ struct ExchangeTotals {
   int balances = 0;  // the times the cuts moved
 };
 
-// Shift balancing (LAMMPS's `balance shift`, on counted work): every `interval` exchanges the
-// ranks compare their work, and where the busiest has more than `tolerance` times the mean the
-// cuts move to where each slab holds an equal share of it. A particle's work is counted, not
-// timed, so that a run (and a resumed one) takes the same cuts on any machine: a fluid
+// Balancing on counted work: every `interval` exchanges the ranks compare their work, and where
+// the busiest has more than `tolerance` times the mean the regions are drawn anew with an equal
+// share of it each: slabs by shift balancing (LAMMPS's `balance shift`), their cuts moved along
+// the axis; boxes by Zoltan's RCB over the particles where they now stand. A particle's work is
+// counted, not timed, so that a run (and a resumed one) takes the same cuts on any machine: a fluid
 // particle's is 1, any other's `other_work` (its loops are a wall's extrapolation or nothing).
 struct BalancePolicy {
   int interval = 50;
@@ -56,20 +58,20 @@ class ParticleExchange {
  public:
   // `owned_kind` is a field of the set: a particle's kind where this rank owns it, -1 for a
   // ghost.
-  ParticleExchange(Communicator ranks, SlabDecomposition slabs, Real halo_depth,
+  ParticleExchange(Communicator ranks, Decomposition regions, Real halo_depth,
                    FieldHandle<std::int32_t> owned_kind, BalancePolicy balance = {})
       : ranks_(ranks),
-        slabs_(std::move(slabs)),
+        regions_(std::move(regions)),
         depth_(halo_depth),
         owned_kind_(owned_kind),
         balance_(balance) {}
 
-  // From the whole case, which every rank built alike: keeps this rank's slab and takes its
+  // From the whole case, which every rank built alike: keeps this rank's region and takes its
   // ghosts.
   void start(ParticleSet<D>& ps) {
     std::vector<std::uint32_t> keep;
     for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (slabs_.owner(ps.position[i][slabs_.axis()]) == ranks_.rank())
+      if (regions_.owner(ps.position[i]) == ranks_.rank())
         keep.push_back(static_cast<std::uint32_t>(i));
     }
     ps.keep(keep);
@@ -80,10 +82,10 @@ class ParticleExchange {
     take_ghosts(ps);
   }
 
-  // Moves the cuts where the work calls for it (every balance interval), sends away what left
-  // the slab and takes in what entered it, and takes the ghosts anew. The ghosts of the last
-  // exchange and the particles sent away stay in the set, marked in gone(): the neighbour sort
-  // that follows drops them (one copy of the set, not two).
+  // Moves the regions where the work calls for it (every balance interval), sends away what
+  // left this rank's region and takes in what entered it, and takes the ghosts anew. The ghosts of
+  // the last exchange and the particles sent away stay in the set, marked in gone(): the neighbour
+  // sort that follows drops them (one copy of the set, not two).
   void exchange(ParticleSet<D>& ps) {
     ++totals_.exchanges;
     gone_.assign(ps.size(), false);
@@ -137,30 +139,30 @@ class ParticleExchange {
     }
   }
 
-  const SlabDecomposition& slabs() const { return slabs_; }
+  const Decomposition& regions() const { return regions_; }
   Real depth() const { return depth_; }
   const ExchangeCounts& last() const { return counts_; }
   const ExchangeTotals& totals() const { return totals_; }
   // Whether each particle of the set is to go (see exchange()); after start(), none.
   const std::vector<bool>& gone() const { return gone_; }
 
-  // Checkpoints: the cuts, where balancing has moved them, and the exchanges since the last
-  // balance.
+  // Checkpoints: the regions (slabs' cuts or boxes), where balancing has moved them, and the
+  // exchanges since the last balance.
   void archive_state(StateArchive& a) {
-    std::vector<double> cuts = slabs_.cuts();
-    a(cuts, since_balance_);
-    if (a.reading()) slabs_ = SlabDecomposition(slabs_.axis(), std::move(cuts));
+    std::vector<double> regions = regions_.regions();
+    a(regions, since_balance_);
+    if (a.reading()) regions_ = regions_.with_regions(regions);
   }
   // Reads past what archive_state wrote, keeping nothing (a checkpoint written on another
   // number of ranks, whose cuts are drawn anew).
   static void skip_archived_state(StateArchive& a) {
-    std::vector<double> cuts;
+    std::vector<double> regions;
     int since_balance = 0;
-    a(cuts, since_balance);
+    a(regions, since_balance);
   }
 
  private:
-  // Sends away the particles this rank owns that left its slab, and takes in those that
+  // Sends away the particles this rank owns that left its region, and takes in those that
   // entered it; marks the ones sent, and the last exchange's ghosts, gone.
   void migrate(ParticleSet<D>& ps) {
     const std::size_t ranks = static_cast<std::size_t>(ranks_.size());
@@ -171,7 +173,7 @@ class ParticleExchange {
         gone_[i] = true;
         continue;
       }
-      const int r = slabs_.owner(ps.position[i][slabs_.axis()]);
+      const int r = regions_.owner(ps.position[i]);
       if (r == ranks_.rank()) continue;
       leaving[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
       gone_[i] = true;
@@ -194,7 +196,7 @@ class ParticleExchange {
       const double work = owned[i] == 0 ? 1.0 : balance_.other_work;
       total += work;
       if (bins) {
-        const double at = (ps.position[i][slabs_.axis()] - lo) * scale;
+        const double at = (ps.position[i][regions_.slabs().axis()] - lo) * scale;
         const auto k = static_cast<std::size_t>(std::clamp(at, 0.0, double(bins->size() - 1)));
         (*bins)[k] += work;
       }
@@ -202,23 +204,44 @@ class ParticleExchange {
     return total;
   }
 
-  // Moves the cuts to equal shares of the work where the busiest rank has more than the
-  // tolerance over the mean: the shares from a histogram of the work along the axis (summed
-  // over the ranks), each cut interpolated within its bin.
+  // Draws the regions anew with equal shares of the work where the busiest rank has more than
+  // the tolerance over the mean.
   void balance(const ParticleSet<D>& ps) {
     const double mine = owned_work(ps, 0, 1, nullptr);
     const double total = ranks_.sum(mine);
     if (!(ranks_.max(mine) > balance_.tolerance * total / ranks_.size())) return;
+    if (regions_.is_slabs() && !shift_cuts(ps, total)) return;
+    if (!regions_.is_slabs()) regions_ = rcb_of_owned(ps);
+    ++totals_.balances;
+  }
+
+  // Zoltan's RCB boxes over the particles this rank owns, weighted by their work.
+  Decomposition rcb_of_owned(const ParticleSet<D>& ps) const {
+    std::vector<double> points, work;
+    const auto& owned = ps[owned_kind_];
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (owned[i] < 0) continue;
+      for (int a = 0; a < D; ++a) points.push_back(ps.position[i][a]);
+      work.push_back(owned[i] == 0 ? 1.0 : balance_.other_work);
+    }
+    return rcb_boxes(ranks_, D, points, work);
+  }
+
+  // Slabs: the cuts moved to equal shares of the `total` work, from a histogram of the work
+  // along the axis (summed over the ranks), each cut interpolated within its bin. False where
+  // the particles stand in one plane across the axis (nothing to cut).
+  bool shift_cuts(const ParticleSet<D>& ps, double total) {
+    const int axis = regions_.slabs().axis();
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     const auto& owned = ps[owned_kind_];
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (owned[i] < 0) continue;
-      lo = std::min(lo, double(ps.position[i][slabs_.axis()]));
-      hi = std::max(hi, double(ps.position[i][slabs_.axis()]));
+      lo = std::min(lo, double(ps.position[i][axis]));
+      hi = std::max(hi, double(ps.position[i][axis]));
     }
     lo = ranks_.min(lo);
     hi = ranks_.max(hi);
-    if (!(hi > lo)) return;
+    if (!(hi > lo)) return false;
     std::vector<double> bins(static_cast<std::size_t>(balance_.bins_per_rank * ranks_.size()));
     owned_work(ps, lo, hi, &bins);
     ranks_.sum(bins);
@@ -232,8 +255,8 @@ class ParticleExchange {
       const double into = bins[k] > 0 ? std::clamp((share - before) / bins[k], 0.0, 1.0) : 0.0;
       cuts.push_back(lo + width * (static_cast<double>(k) + into));
     }
-    slabs_ = SlabDecomposition(slabs_.axis(), std::move(cuts));
-    ++totals_.balances;
+    regions_ = Decomposition(SlabDecomposition(axis, std::move(cuts)));
+    return true;
   }
 
   // Appends to the set the copies of the other ranks' particles within the halo's depth.
@@ -243,7 +266,7 @@ class ParticleExchange {
     const auto& own = ps[owned_kind_];
     for (std::size_t i = 0; i < before; ++i) {
       if (own[i] < 0 || gone_[i]) continue;
-      slabs_.for_each_rank_near(ps.position[i][slabs_.axis()], depth_, ranks_.rank(), [&](int r) {
+      regions_.for_each_rank_near(ps.position[i], depth_, ranks_.rank(), [&](int r) {
         copies[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
       });
     }
@@ -285,7 +308,7 @@ class ParticleExchange {
   }
 
   Communicator ranks_;
-  SlabDecomposition slabs_;
+  Decomposition regions_;
   Real depth_;
   FieldHandle<std::int32_t> owned_kind_;
   BalancePolicy balance_;

@@ -16,7 +16,7 @@ TEST(ParticleExchange, OneRankKeepsEveryParticleAndTakesNoGhost) {
   const auto owned = ps.add_int_field({"owned_kind", "1", false});
   for (int i = 0; i < 6; ++i)
     ps.add(Vec<2>(0.1 * i, 0.0), Vec<2>::Zero(), 1000, 1, static_cast<ParticleKind>(i % 3));
-  ParticleExchange<2> exchange(Communicator::alone(), SlabDecomposition(), 0.3, owned);
+  ParticleExchange<2> exchange(Communicator::alone(), Decomposition(), 0.3, owned);
   exchange.start(ps);
   ASSERT_EQ(ps.size(), 6u);
   for (std::size_t i = 0; i < ps.size(); ++i)
