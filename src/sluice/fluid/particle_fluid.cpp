@@ -180,7 +180,6 @@ void ParticleFluid<D>::split_evenly(Real halo_depth) {
   auto& ps = state_.particles;
   // The first regions share the work as the balance counts it.
   const BalancePolicy balance;
-  const auto work_of = [&](std::size_t i) { return ps.is_fluid(i) ? 1.0 : balance.other_work; };
   Decomposition regions;
   if (rcb_) {
     // Every rank holds the whole case: each hands Zoltan every size()-th particle, so that it
@@ -189,7 +188,7 @@ void ParticleFluid<D>::split_evenly(Real halo_depth) {
     const auto ranks = static_cast<std::size_t>(ranks_.size());
     for (std::size_t i = static_cast<std::size_t>(ranks_.rank()); i < ps.size(); i += ranks) {
       for (int a = 0; a < D; ++a) points.push_back(ps.position[i][a]);
-      work.push_back(work_of(i));
+      work.push_back(balance.work(ps.is_fluid(i)));
     }
     regions = rcb_boxes(ranks_, D, points, work);
   } else {
@@ -197,7 +196,7 @@ void ParticleFluid<D>::split_evenly(Real halo_depth) {
     std::vector<double> coordinates(ps.size()), work(ps.size());
     for (std::size_t i = 0; i < ps.size(); ++i) {
       coordinates[i] = ps.position[i][axis];
-      work[i] = work_of(i);
+      work[i] = balance.work(ps.is_fluid(i));
     }
     regions = Decomposition(balanced_slabs(coordinates, work, axis, ranks_.size()));
   }

@@ -14,7 +14,7 @@
 
 namespace sluice {
 
-// A rank's box: [lo, hi) along each axis; an open side lies at +-infinity (or DBL_MAX).
+// A rank's box: [lo, hi) along each axis; an open side lies at +-infinity.
 struct RankBox {
   std::array<double, 3> lo{}, hi{};
 };

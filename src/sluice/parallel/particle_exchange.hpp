@@ -50,6 +50,7 @@ struct BalancePolicy {
   int interval = 50;
   double tolerance = 1.1;
   double other_work = 0.1;
+  double work(bool fluid) const { return fluid ? 1.0 : other_work; }
   int bins_per_rank = 64;  // the histogram of work along the axis the cuts are placed on
 };
 
@@ -193,7 +194,7 @@ class ParticleExchange {
     const double scale = bins ? static_cast<double>(bins->size()) / (hi - lo) : 0;
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (owned[i] < 0) continue;
-      const double work = owned[i] == 0 ? 1.0 : balance_.other_work;
+      const double work = balance_.work(owned[i] == 0);
       total += work;
       if (bins) {
         const double at = (ps.position[i][regions_.slabs().axis()] - lo) * scale;
@@ -222,7 +223,7 @@ class ParticleExchange {
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (owned[i] < 0) continue;
       for (int a = 0; a < D; ++a) points.push_back(ps.position[i][a]);
-      work.push_back(owned[i] == 0 ? 1.0 : balance_.other_work);
+      work.push_back(balance_.work(owned[i] == 0));
     }
     return rcb_boxes(ranks_, D, points, work);
   }
