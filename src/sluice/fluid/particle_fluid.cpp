@@ -184,13 +184,10 @@ void ParticleFluid<D>::split_evenly(Real halo_depth) {
   if (rcb_) {
     // Every rank holds the whole case: each hands Zoltan every size()-th particle, so that it
     // sees each once.
-    std::vector<double> points, work;
+    const auto rank = static_cast<std::size_t>(ranks_.rank());
     const auto ranks = static_cast<std::size_t>(ranks_.size());
-    for (std::size_t i = static_cast<std::size_t>(ranks_.rank()); i < ps.size(); i += ranks) {
-      for (int a = 0; a < D; ++a) points.push_back(ps.position[i][a]);
-      work.push_back(balance.work(ps.is_fluid(i)));
-    }
-    regions = rcb_boxes(ranks_, D, points, work);
+    regions = ParticleExchange<D>::rcb_of(ranks_, ps, balance,
+                                          [&](std::size_t i) { return i % ranks == rank; });
   } else {
     const int axis = longest_horizontal_axis(state_.domain, D);
     std::vector<double> coordinates(ps.size()), work(ps.size());

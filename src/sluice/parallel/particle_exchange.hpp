@@ -37,7 +37,7 @@ struct ExchangeTotals {
   // Waiting for the other ranks to reach the exchange (their work is larger), then the
   // exchange's own parts.
   double wait_seconds = 0, migration_seconds = 0, halo_seconds = 0, balance_seconds = 0;
-  int balances = 0;  // the times the cuts moved
+  int balances = 0;  // the times the regions moved
 };
 
 // Balancing on counted work: every `interval` exchanges the ranks compare their work, and where
@@ -140,6 +140,20 @@ class ParticleExchange {
     }
   }
 
+  // Collective: Zoltan's RCB boxes over the particles of the set for which take(i) holds (each
+  // particle taken on one rank only), weighted by their counted work.
+  template <class Take>
+  static Decomposition rcb_of(const Communicator& ranks, const ParticleSet<D>& ps,
+                              const BalancePolicy& balance, Take&& take) {
+    std::vector<double> points, work;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (!take(i)) continue;
+      for (int a = 0; a < D; ++a) points.push_back(ps.position[i][a]);
+      work.push_back(balance.work(ps.is_fluid(i)));
+    }
+    return rcb_boxes(ranks, D, points, work);
+  }
+
   const Decomposition& regions() const { return regions_; }
   Real depth() const { return depth_; }
   const ExchangeCounts& last() const { return counts_; }
@@ -218,14 +232,8 @@ class ParticleExchange {
 
   // Zoltan's RCB boxes over the particles this rank owns, weighted by their work.
   Decomposition rcb_of_owned(const ParticleSet<D>& ps) const {
-    std::vector<double> points, work;
     const auto& owned = ps[owned_kind_];
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (owned[i] < 0) continue;
-      for (int a = 0; a < D; ++a) points.push_back(ps.position[i][a]);
-      work.push_back(balance_.work(owned[i] == 0));
-    }
-    return rcb_boxes(ranks_, D, points, work);
+    return rcb_of(ranks_, ps, balance_, [&](std::size_t i) { return owned[i] >= 0; });
   }
 
   // Slabs: the cuts moved to equal shares of the `total` work, from a histogram of the work
