@@ -40,6 +40,10 @@ class ContactPipeline final : public BodyInteraction {
   void remember_contact_impulses(const RowGroup& rows) override {
     solver_->remember_impulses(rows);
   }
+  void evaluate_only(const std::vector<bool>& here) override { here_ = here; }
+  std::vector<IslandPair> pairs_in_reach(const std::vector<SystemBody>& bodies, double dt) override;
+  void write_share(StateArchive& a) override;
+  void read_shares(std::vector<StateArchive>& parts) override;
 
   // Checkpoints: the contacts with their histories and the solver's state (the bodies' places
   // and the candidate pairs are found anew each call).
@@ -51,11 +55,19 @@ class ContactPipeline final : public BodyInteraction {
   }
 
  private:
-  void place(const std::vector<SystemBody>& bodies);
+  // Each body's surface particles in the world; `here_only`: only the bodies this process
+  // evaluates, and the fixed ones.
+  void place(const std::vector<SystemBody>& bodies, bool here_only = false);
   // The broad phase's pairs, each body's box grown by `growth` (may be empty) and then by
   // `margin`; a plane wall's pairs also checked against its plane.
   void candidates(const std::vector<SystemBody>& bodies, const std::vector<double>& growth,
                   double margin);
+  // Calls in_reach(a, b, approach) for each pair whose surfaces can come within `reach` times
+  // their own travel over dt plus the contact distance (1: the step's reach), approach being
+  // the fastest the two can close.
+  template <class InReach>
+  void each_pair_in_reach(const std::vector<SystemBody>& bodies, double dt, double reach,
+                          InReach&& in_reach);
 
   double distance_;
   std::unique_ptr<ContactSolver> solver_;
@@ -67,6 +79,11 @@ class ContactPipeline final : public BodyInteraction {
   std::vector<AxisBox> boxes_;
   std::vector<bool> fixed_, large_;
   std::vector<BodyPair> pairs_;
+  std::vector<bool> here_;  // the bodies this process evaluates (empty: all)
+  // A split run's pairs in twice the step's reach, found by the last stable_step (over a step
+  // of island_pairs_dt_; -1: none).
+  std::vector<IslandPair> island_pairs_;
+  double island_pairs_dt_ = -1;
 };
 
 }  // namespace sluice

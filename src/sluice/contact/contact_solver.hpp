@@ -50,6 +50,15 @@ class ContactSolver {
   virtual double deepest_overlap_ever() const { return 0; }
   // Checkpoints: what the solver carries from one solve to the next.
   virtual void archive_state(StateArchive& a) = 0;
+
+  // A split run, where each process solves the contacts of its own bodies: the figures of the
+  // last solve here, and then those of every process's made one (energy summed, overlaps the
+  // deepest), so that each sizes the next sub-step alike.
+  struct Figures {
+    double stored_energy = 0, deepest_overlap = 0, deepest_overlap_ever = 0;
+  };
+  virtual Figures figures() const { return {}; }
+  virtual void set_figures(const Figures& /*figures*/) {}
 };
 
 }  // namespace sluice

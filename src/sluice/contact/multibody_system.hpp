@@ -29,6 +29,8 @@ class MultibodySystem {
     rigid_.set_velocity_step(settings);
   }
   void add_joint(const Joint& joint) { rigid_.add_joint(joint); }
+  // A split run's division of the bodies between its ranks (RigidSystem::set_sharing).
+  void set_sharing(BodySharing* sharing) { rigid_.set_sharing(sharing); }
 
   // Advances by dt. `force` and `torque` (one per body, may be empty) are held over the
   // sub-steps, as the fluid's force is; `participant` (may be null) joins every velocity-level

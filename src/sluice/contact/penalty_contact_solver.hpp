@@ -35,6 +35,14 @@ class PenaltyContactSolver final : public ContactSolver {
   }
   // The deepest overlap at any solve so far.
   double deepest_overlap_ever() const override { return deepest_overlap_ever_; }
+  Figures figures() const override {
+    return {elastic_energy_, deepest_overlap_, deepest_overlap_ever_};
+  }
+  void set_figures(const Figures& f) override {
+    elastic_energy_ = f.stored_energy;
+    deepest_overlap_ = f.deepest_overlap;
+    deepest_overlap_ever_ = f.deepest_overlap_ever;
+  }
 
  private:
   const ContactPair& law(std::size_t a, std::size_t b, const std::vector<SystemBody>& bodies,

@@ -120,6 +120,10 @@ struct CompareEntry {
 struct RanksConfig {
   std::string partition = "slabs";
   std::pair<std::string, int> partition_place;  // file (or --set) and line of the key
+  // `islands`: each island of bodies that can touch over a step (or are joined) is advanced
+  // by one rank, and every rank gathers the states after the step; `every_rank`: every rank
+  // advances every body alike.
+  std::string bodies = "islands";
 };
 
 struct CaseConfig {
@@ -144,7 +148,8 @@ struct CaseConfig {
   double body_interval = 0;        // time between rows of OUT/bodies/NAME.csv
   double checkpoint_interval = 0;  // simulated time between checkpoints; 0: none
   // The case as read, with its --set overrides, less the keys a resumed run may change
-  // (end_time, checkpoint_interval, compare): a checkpoint of another case differs in it.
+  // (end_time, checkpoint_interval, compare, ranks.bodies): a checkpoint of another case
+  // differs in it.
   std::string identity;
   std::vector<ProbeConfig> probes;
   std::vector<CompareEntry> compare;  // read by `sluice compare` only

@@ -144,6 +144,11 @@ std::string identity_of(const YAML::Node& root) {
   if (!root.IsMap()) return {};
   YAML::Node copy = YAML::Clone(root);
   for (const char* key : {"end_time", "checkpoint_interval", "compare"}) copy.remove(key);
+  // How the ranks share the bodies changes no answer (sim/island_sharing.hpp).
+  if (YAML::Node ranks = copy["ranks"]; ranks.IsMap()) {
+    ranks.remove("bodies");
+    if (ranks.size() == 0) copy.remove("ranks");
+  }
   YAML::Emitter out;
   out << copy;
   return out.c_str();
@@ -251,6 +256,8 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
     c.ranks.partition =
         ranks.optional_choice("partition", c.ranks.partition, "partition", {"slabs", "rcb"});
     c.ranks.partition_place = ranks.place_of("partition");
+    c.ranks.bodies = ranks.optional_choice("bodies", c.ranks.bodies, "division of the bodies",
+                                           {"islands", "every_rank"});
     ranks.finish();
   }
   // A case of bodies alone needs no fluid and no model.

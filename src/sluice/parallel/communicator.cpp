@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -173,25 +174,64 @@ std::vector<std::vector<unsigned char>> Communicator::exchange(
 #endif
 }
 
+#ifdef SLUICE_WITH_MPI
+namespace {
+// Every rank's `count` items of `type` (`size` bytes each), one after another by rank, with
+// each rank's count.
+std::vector<unsigned char> gather_items(const void* data, std::size_t count, MPI_Datatype type,
+                                        std::size_t size, std::vector<int>& counts) {
+  const int mine = as_count(count);
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  counts.assign(static_cast<std::size_t>(ranks), 0);
+  check(MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD),
+        "a gather's counts");
+  std::vector<int> offsets(counts.size());
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    offsets[r] = as_count(total);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  as_count(total * size);
+  std::vector<unsigned char> out(total * size);
+  check(MPI_Allgatherv(data, mine, type, out.data(), counts.data(), offsets.data(), type,
+                       MPI_COMM_WORLD),
+        "a gather");
+  return out;
+}
+}  // namespace
+#endif
+
 std::vector<double> Communicator::gather_all(std::span<const double> values) const {
   if (!split()) return {values.begin(), values.end()};
 #ifdef SLUICE_WITH_MPI
-  const int count = as_count(values.size());
-  std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
-  check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD),
-        "a gather's counts");
-  int total = 0;
-  for (std::size_t r = 0; r < counts.size(); ++r) {
-    offsets[r] = total;
-    total += counts[r];
-  }
-  std::vector<double> out(static_cast<std::size_t>(total));
-  check(MPI_Allgatherv(values.data(), count, MPI_DOUBLE, out.data(), counts.data(), offsets.data(),
-                       MPI_DOUBLE, MPI_COMM_WORLD),
-        "a gather");
+  std::vector<int> counts;
+  const std::vector<unsigned char> bytes =
+      gather_items(values.data(), values.size(), MPI_DOUBLE, sizeof(double), counts);
+  std::vector<double> out(bytes.size() / sizeof(double));
+  std::memcpy(out.data(), bytes.data(), bytes.size());
   return out;
 #else
   return {values.begin(), values.end()};
+#endif
+}
+
+std::vector<std::string> Communicator::gather_all(const std::string& bytes) const {
+  if (!split()) return {bytes};
+#ifdef SLUICE_WITH_MPI
+  std::vector<int> counts;
+  const std::vector<unsigned char> all =
+      gather_items(bytes.data(), bytes.size(), MPI_BYTE, 1, counts);
+  std::vector<std::string> out;
+  std::size_t offset = 0;
+  for (const int count : counts) {
+    out.emplace_back(reinterpret_cast<const char*>(all.data()) + offset,
+                     static_cast<std::size_t>(count));
+    offset += static_cast<std::size_t>(count);
+  }
+  return out;
+#else
+  return {bytes};
 #endif
 }
 

@@ -54,6 +54,8 @@ class Communicator {
       const std::vector<std::vector<unsigned char>>& outgoing) const;
   // Every rank's `values`, one after another by rank, on every rank.
   std::vector<double> gather_all(std::span<const double> values) const;
+  // Every rank's `bytes`, by rank, on every rank.
+  std::vector<std::string> gather_all(const std::string& bytes) const;
   // Stops every rank of the run with `code` (MPI_Abort): for a failure on one rank while others
   // wait in a collective call. Returns only where the run is one rank.
   void abort(int code) const;

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "sluice/ccp/row_group.hpp"
+#include "sluice/core/state_archive.hpp"
+#include "sluice/rigid/body_islands.hpp"
 #include "sluice/rigid/rigid_body.hpp"
 
 namespace sluice {
@@ -42,6 +44,20 @@ class BodyInteraction {
                                    double /*recovery_speed*/, RowGroup& /*rows*/) {}
   // The rows of contact_constraints after the solve, with their impulses.
   virtual void remember_contact_impulses(const RowGroup& /*rows*/) {}
+
+  // A split run (rigid/body_sharing.hpp). Each process evaluates only the pairs with a body
+  // marked in `here` (empty: every pair); no pair joins bodies of two processes.
+  virtual void evaluate_only(const std::vector<bool>& /*here*/) {}
+  // The pairs of bodies that could come within reach of each other over a coming step of dt,
+  // with a margin: what ties bodies into islands.
+  virtual std::vector<IslandPair> pairs_in_reach(const std::vector<SystemBody>& /*bodies*/,
+                                                 double /*dt*/) {
+    return {};
+  }
+  // This process's part of the interaction's state (its pairs' contacts and figures), and
+  // back from every process's part (in rank order) the whole state as one process holds it.
+  virtual void write_share(StateArchive& /*a*/) {}
+  virtual void read_shares(std::vector<StateArchive>& /*parts*/) {}
 };
 
 }  // namespace sluice

@@ -62,7 +62,8 @@ void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* part
   for (const ConstraintRow& row : joint_rows_.rows()) last.push_back(row.impulse);
   joint_rows_.clear();
   for (const Joint& joint : joints_) {
-    add_joint_rows(joint, bodies_, h, stabilisation, joint_rows_);
+    if (here(joint.a) || here(joint.b))
+      add_joint_rows(joint, bodies_, h, stabilisation, joint_rows_);
   }
   joint_rows_.drop_inert(problem_.bodies);
   if (last.size() == joint_rows_.size()) {
@@ -90,7 +91,7 @@ void RigidSystem::solve_velocities(double h, bool contacts, CcpParticipant* part
   if (contacts && interaction_) interaction_->remember_contact_impulses(contact_rows_);
 
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    if (bodies_[b].fixed) continue;
+    if (!moves(b)) continue;
     RigidBody& s = bodies_[b].state;
     s.velocity = velocities_.linear[b];
     s.angular_momentum = s.world_inertia() * velocities_.angular[b];
@@ -108,6 +109,10 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::v
   const int substeps = static_cast<int>(std::ceil(dt / solid_step(dt) - 1e-9));
   const double h = dt / substeps;
   const std::size_t n = bodies_.size();
+  if (sharing_) {
+    here_ = sharing_->bodies_here(bodies_, joints_, interaction_, dt);
+    if (interaction_) interaction_->evaluate_only(here_);
+  }
   if (substeps_ == 0) evaluate_interaction(0);
   auto total_force = [&](std::size_t b) {
     Vec3 f = bodies_[b].state.mass * gravity_ + interaction_force_[b];
@@ -123,7 +128,7 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::v
   for (int s = 0; s < substeps; ++s) {
     for (std::size_t b = 0; b < n; ++b) {
       if (bodies_[b].prescribed) bodies_[b].prescribed(time_ + (s + 1) * h, bodies_[b].state);
-      if (!bodies_[b].fixed) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
+      if (moves(b)) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
     }
     // Velocity constraints act on the velocity the bodies drift with, so that they hold the
     // positions too.
@@ -131,24 +136,25 @@ int RigidSystem::advance(double dt, const std::vector<Vec3>& force, const std::v
       solve_velocities(h, false, participant, velocity_step_.stabilisation);
     }
     for (std::size_t b = 0; b < n; ++b) {
-      if (!bodies_[b].fixed) drift(bodies_[b].state, h);
+      if (moves(b)) drift(bodies_[b].state, h);
     }
     // The dashpots see the velocities predicted to the end of the sub-step (with the forces
     // of the last evaluation), not the half-step ones, which would lag by h/2.
     for (std::size_t b = 0; b < n; ++b) {
       half[b] = bodies_[b].state;
-      if (!bodies_[b].fixed) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
+      if (moves(b)) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
     }
     evaluate_interaction(h);
     for (std::size_t b = 0; b < n; ++b) bodies_[b].state = half[b];
     for (std::size_t b = 0; b < n; ++b) {
-      if (!bodies_[b].fixed) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
+      if (moves(b)) kick(bodies_[b].state, total_force(b), total_torque(b), 0.5 * h);
     }
     // The last half kick leaves the joints: the velocities kept (which a fluid sees, and whose
     // change it takes for the bodies' acceleration) are put back on them.
     if (!joints_.empty()) solve_velocities(h, false, nullptr, 0.0);
     ++substeps_;
   }
+  if (sharing_) sharing_->gather(bodies_, interaction_force_, interaction_torque_, interaction_);
   time_ += dt;
   return substeps;
 }

@@ -17,6 +17,7 @@
 #include "sluice/ccp/ccp_solver.hpp"
 #include "sluice/ccp/row_group.hpp"
 #include "sluice/rigid/body_interaction.hpp"
+#include "sluice/rigid/body_sharing.hpp"
 #include "sluice/rigid/ccp_participant.hpp"
 #include "sluice/rigid/joint.hpp"
 #include "sluice/rigid/rigid_body.hpp"
@@ -62,6 +63,9 @@ class RigidSystem {
   // cones of one velocity-level step), not by the penalty method's sub-steps.
   bool complementarity() const { return interaction_ && interaction_->in_velocity_step(); }
   void add_joint(const Joint& joint) { joints_.push_back(joint); }
+  // A split run's division of the bodies between its processes (not owned; nullptr: this
+  // process advances every body). The penalty method only.
+  void set_sharing(BodySharing* sharing) { sharing_ = sharing; }
   const std::vector<Joint>& joints() const { return joints_; }
 
   // Advances by dt. `force` and `torque` (one per body, may be empty) are held over the step.
@@ -101,6 +105,9 @@ class RigidSystem {
   bool has_velocity_rows(const CcpParticipant* participant) const {
     return !joints_.empty() || participant != nullptr;
   }
+  // Whether this process advances body b (a joint's end may be the world: never here).
+  bool here(std::size_t b) const { return b < bodies_.size() && (here_.empty() || here_[b]); }
+  bool moves(std::size_t b) const { return !bodies_[b].fixed && here(b); }
 
   Vec3 gravity_;
   std::vector<SystemBody> bodies_;
@@ -114,6 +121,8 @@ class RigidSystem {
   RowGroup contact_rows_, joint_rows_;
   BodyVelocities velocities_;
   VelocityStepTotals totals_;
+  BodySharing* sharing_ = nullptr;
+  std::vector<bool> here_;  // the bodies this process advances in the present step (empty: all)
 };
 
 }  // namespace sluice

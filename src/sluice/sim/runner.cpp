@@ -189,6 +189,8 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
                ranks.split() ? fmt::format(" on each of {} ranks", ranks.size()) : "",
                sim.fluid().describe());
     if (!decomposition.empty()) fmt::print(stderr, "  {}\n", decomposition);
+    if (const std::string division = sim.bodies_division(); !division.empty())
+      fmt::print(stderr, "  {}\n", division);
     if (resumed) {
       fmt::print(stderr, "  resuming from {} at t = {:.6g} s (step {}) to t = {:.6g} s{}\n",
                  resumed->path, sim.time(), first_step, end_time,
@@ -315,6 +317,8 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
   summary.solid_substeps = sim.bodies().substeps() - first_substeps;
   summary.most_substeps_per_step = sim.coupler().most_substeps();
   summary.most_exchanges_per_step = sim.coupler().most_exchanges();
+  summary.body_islands = sim.body_islands();
+  summary.bodies_advanced_on_first_rank = sim.bodies_advanced_here();
   summary.velocity_steps = sim.bodies().system().rigid().velocity_steps();
   summary.stages = timers.entries();
   summary.fluid_counters = fluid.counters();
@@ -394,6 +398,7 @@ std::string stats_json(const RunSummary& r) {
       "  \"checkpoints\": {},\n"
       "  \"bodies\": {},\n  \"solid_substeps\": {},\n  \"solid_substeps_per_step\": {:.6g},\n"
       "  \"most_solid_substeps_in_a_step\": {},\n  \"most_body_exchanges_in_a_step\": {},\n"
+      "  \"body_islands\": {},\n  \"bodies_advanced_on_first_rank\": {},\n"
       "  \"velocity_solves\": {{{}}},\n"
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
@@ -402,8 +407,8 @@ std::string stats_json(const RunSummary& r) {
       r.simulated_time > r.start_time ? r.wall_seconds / (r.simulated_time - r.start_time) : 0,
       r.frames, r.checkpoints, r.bodies, r.solid_substeps,
       r.steps > 0 ? double(r.solid_substeps) / r.steps : 0, r.most_substeps_per_step,
-      r.most_exchanges_per_step, json_map(velocity_solves), json_map(r.fluid_counters),
-      json_map(r.final_probes), stages);
+      r.most_exchanges_per_step, r.body_islands, r.bodies_advanced_on_first_rank,
+      json_map(velocity_solves), json_map(r.fluid_counters), json_map(r.final_probes), stages);
 }
 
 }  // namespace sluice

@@ -46,7 +46,10 @@ struct RunSummary {
   std::size_t bodies = 0;
   long solid_substeps = 0;  // solid sub-steps of this run (bodies sub-cycle within a step)
   int most_substeps_per_step = 0;
-  int most_exchanges_per_step = 1;    // of the fluid's loads with the bodies (Coupler::exchanges)
+  int most_exchanges_per_step = 1;  // of the fluid's loads with the bodies (Coupler::exchanges)
+  // Several ranks with ranks.bodies: islands: the islands of bodies at the last step, and how
+  // many bodies the first rank advanced in it (0 and 0 otherwise).
+  int body_islands = 0, bodies_advanced_on_first_rank = 0;
   VelocityStepTotals velocity_steps;  // the velocity-level solves (joints, complementarity)
   std::vector<std::pair<std::string, double>> fluid_counters;  // FluidObservation::counters()
   std::vector<std::pair<std::string, double>> final_probes;    // each probe at the end

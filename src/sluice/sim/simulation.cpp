@@ -15,6 +15,12 @@ Simulation<D>::Simulation(const io::CaseConfig& config, const ModelRegistry& mod
       fluid_(make_fluid_system<D>(config_, *bodies_, models, services)),
       coupler_(bodies_->system(), bodies_->count(), &fluid_->exchange(), config.contact.subcycling,
                models.coupling_scheme(config_)) {
+  MultibodySystem& system = bodies_->system();
+  if (ranks_.split() && config_.ranks.bodies == "islands" && bodies_->count() > 0 &&
+      !system.rigid().complementarity()) {
+    sharing_ = std::make_unique<IslandSharing>(ranks_);
+    system.set_sharing(sharing_.get());
+  }
   StageList before_bodies, after_bodies;
   fluid_->append_stages(before_bodies, after_bodies);
   stages_ = coupler_.assemble_step(std::move(before_bodies), std::move(after_bodies),
@@ -58,6 +64,16 @@ void Simulation<D>::step(double until) {
   }
   clock_.time += dt;
   ++clock_.step;
+}
+
+template <int D>
+std::string Simulation<D>::bodies_division() const {
+  if (!ranks_.split() || bodies_->count() == 0) return "";
+  if (sharing_) {
+    return "bodies: each island of bodies in reach of each other (or joined) advanced by one "
+           "rank";
+  }
+  return "bodies: every rank advances every body";
 }
 
 template <int D>

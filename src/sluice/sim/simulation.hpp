@@ -12,6 +12,7 @@
 #include "sluice/io/case_config.hpp"
 #include "sluice/models/shipped_models.hpp"
 #include "sluice/parallel/communicator.hpp"
+#include "sluice/sim/island_sharing.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace sluice {
@@ -49,6 +50,11 @@ class Simulation {
   // Checkpoints: the clock, the bodies, the coupling and the fluid, written or read back.
   void archive_state(StateArchive& a);
   const Communicator& ranks() const { return ranks_; }
+  // How the ranks share the bodies' advance: a line for the run's start ("" on one rank or
+  // without bodies), and the islands of the last step (0 where every rank advances them all).
+  std::string bodies_division() const;
+  int body_islands() const { return sharing_ ? sharing_->islands() : 0; }
+  int bodies_advanced_here() const { return sharing_ ? sharing_->bodies_advanced_here() : 0; }
 
  private:
   // The smallest of the ranks' steps, and its limit, on every rank.
@@ -58,6 +64,7 @@ class Simulation {
   std::string limit_;  // agreed()'s limit
   io::CaseConfig config_;
   std::unique_ptr<RigidBodies> bodies_;
+  std::unique_ptr<IslandSharing> sharing_;  // a split run's, with ranks.bodies: islands
   std::unique_ptr<FluidSystem> fluid_;
   Coupler coupler_;
   StageList stages_;

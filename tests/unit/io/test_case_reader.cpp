@@ -156,6 +156,18 @@ TEST(CaseReader, SetOverridesKeysListEntriesAndModelParameters) {
   EXPECT_EQ(c.source->overridden_paths.count("end_time"), 1u);
 }
 
+TEST(CaseReader, AResumedRunMayChangeHowTheRanksShareTheBodiesButNotThePartition) {
+  const CaseConfig plain = parse_case(kMinimal, "case.yaml");
+  EXPECT_EQ(plain.ranks.bodies, "islands");
+  const CaseConfig every = parse_case(kMinimal, "case.yaml", {"ranks={bodies: every_rank}"});
+  EXPECT_EQ(every.ranks.bodies, "every_rank");
+  EXPECT_EQ(every.identity, plain.identity);
+  const CaseConfig both =
+      parse_case(kMinimal, "case.yaml", {"ranks={partition: rcb, bodies: every_rank}"});
+  EXPECT_NE(both.identity, plain.identity);
+  EXPECT_EQ(both.identity, parse_case(kMinimal, "case.yaml", {"ranks={partition: rcb}"}).identity);
+}
+
 TEST(CaseReader, SetCanAddAnOptionalKey) {
   const CaseConfig c = parse_case(kMinimal, "case.yaml", {"probe_interval=0.5"});
   EXPECT_DOUBLE_EQ(c.probe_interval, 0.5);

@@ -89,5 +89,41 @@ TEST(RigidSystem, FixedAndPrescribedBodies) {
   EXPECT_EQ(system.energy().kinetic, 0);  // fixed and prescribed bodies carry none
 }
 
+// A division that gives this process body 0 only, and after the step brings body 1 to where
+// `theirs` says the other process moved it.
+class FirstBodyHere final : public BodySharing {
+ public:
+  std::vector<bool> bodies_here(const std::vector<SystemBody>& bodies, const std::vector<Joint>&,
+                                BodyInteraction*, double) override {
+    std::vector<bool> here(bodies.size(), false);
+    here[0] = true;
+    return here;
+  }
+  void gather(std::vector<SystemBody>& bodies, std::vector<Vec3>&, std::vector<Vec3>&,
+              BodyInteraction*) override {
+    before_gather = bodies[1].state.position;
+    bodies[1].state = theirs;
+  }
+  RigidBody theirs;
+  Vec3 before_gather = Vec3::Constant(-1);
+};
+
+TEST(RigidSystem, AdvancesOnlyTheBodiesItsDivisionGivesIt) {
+  RigidSystem alone(Vec3(0, 0, -9.81)), shared(Vec3(0, 0, -9.81));
+  FirstBodyHere division;
+  division.theirs.position = Vec3(7, 8, 9);
+  shared.set_sharing(&division);
+  for (RigidSystem* system : {&alone, &shared}) {
+    system->add(free_body(Vec3::Zero()));
+    system->add(free_body(Vec3(1, 0, 0)));
+    system->advance(0.1);
+  }
+  // Body 0 falls as alone; body 1 was left where it stood, then took the gathered state.
+  EXPECT_EQ(shared.bodies()[0].state.position, alone.bodies()[0].state.position);
+  EXPECT_EQ(shared.bodies()[0].state.velocity, alone.bodies()[0].state.velocity);
+  EXPECT_EQ(division.before_gather, Vec3(1, 0, 0));
+  EXPECT_EQ(shared.bodies()[1].state.position, Vec3(7, 8, 9));
+}
+
 }  // namespace
 }  // namespace sluice
