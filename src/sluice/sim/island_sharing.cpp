@@ -1,5 +1,6 @@
 #include "sluice/sim/island_sharing.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
