@@ -71,6 +71,8 @@ CHECKS = [
     ("`mac`: F2's area, F4 lid-driven cavity (Ghia et al. 1982), bodies",
      "`cases/*` with `model.name=mac`", r"^Mac"),
     ("checkpoints resume to the same answer", "every model", r"Resume\."),
+    ("F7 flow past a cylinder in a channel (Schäfer & Turek 1996, 2D-1), `mac`",
+     "`cases/cylinder_channel_2d.yaml`", r"^OpenBoundaries\."),
 ]
 
 BUILDS = ("release", "baseline")

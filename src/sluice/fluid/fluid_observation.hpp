@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,11 @@ class FluidObservation {
   virtual double pressure_at(const Vec3& x) const = 0;
   virtual double water_height_at(const Vec3& gauge) const = 0;
   virtual double surge_front(int axis) const = 0;
+  // The volume flux out of the domain through the case's open boundary `index` (inflow
+  // negative) [m^3/s; 2D: m^2/s, per metre across]; NaN where the model has no such boundary.
+  virtual double boundary_flux(std::size_t /*index*/) const {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 
   virtual FluidSize size() const = 0;
   virtual FluidEnergy energy() const = 0;  // and the fluid's mass

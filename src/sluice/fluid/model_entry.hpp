@@ -60,6 +60,9 @@ struct ModelEntry {
   // Whether its particles split over several ranks (ParticleFluid::distribute); empty: it runs
   // on one, and the reason it cannot on more (a run on several ranks is refused with it).
   std::string one_rank_only = "it has no decomposition over ranks";
+  // Whether it takes the case's open boundaries (inlets, outlets); a case with one and a model
+  // without is refused.
+  bool open_boundaries = false;
 };
 
 }  // namespace sluice

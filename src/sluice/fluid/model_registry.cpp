@@ -41,6 +41,13 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                                    "mpirun, or with -np 1",
                                    config.model_name, entry->one_rank_only));
     }
+    if (!entry->open_boundaries && !config.boundaries.empty()) {
+      const io::BoundaryConfig& b = config.boundaries.front();
+      throw InputError(config.file(), b.line, b.key + ".type",
+                       fmt::format("the {} model has no open boundaries yet; the mac model has "
+                                   "inlets and outlets",
+                                   config.model_name));
+    }
     return entry->make(config, bodies, services);
   }
   io::MapReader model(config.source, config.model, "model", config.model_line);

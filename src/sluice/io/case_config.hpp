@@ -16,6 +16,7 @@
 #include "sluice/core/types.hpp"
 #include "sluice/geometry/axis_box.hpp"
 #include "sluice/io/body_config.hpp"
+#include "sluice/io/boundary_config.hpp"
 #include "sluice/io/yaml_reader.hpp"
 #include "sluice/rigid/rigid_system.hpp"
 
@@ -59,13 +60,15 @@ struct WallConfig {
   }
 };
 
-enum class ProbeKind { kPressure, kWaterHeight, kSurgeFront };
+enum class ProbeKind { kPressure, kWaterHeight, kSurgeFront, kBoundaryFlux };
 
 struct ProbeConfig {
   std::string name;
   ProbeKind kind = ProbeKind::kPressure;
   Vec3 point = Vec3::Zero();  // pressure: the point; water height: the gauge's (x, y)
   int axis = 0;               // surge front: 0 = x, 1 = y
+  std::size_t boundary = 0;   // boundary flux: the index in `boundaries`
+  std::string unit = "Pa";    // of its readings, for probes.csv's header
   int line = 0;
 };
 
@@ -140,6 +143,7 @@ struct CaseConfig {
   double probe_interval = 0;
   FluidConfig fluid;  // no blocks: a case of bodies alone (no model either)
   std::vector<WallConfig> walls;
+  std::vector<BoundaryConfig> boundaries;  // open sides of the domain: inlets, outlets
   std::vector<BodyConfig> bodies;
   ContactConfig contact;
   CouplingConfig coupling;

@@ -9,6 +9,7 @@
 
 #include "sluice/contact/contact_solvers.hpp"
 #include "sluice/io/body_reader.hpp"
+#include "sluice/io/boundary_reader.hpp"
 #include "sluice/io/case_config.hpp"
 
 namespace sluice::io {
@@ -71,7 +72,8 @@ WallConfig read_wall(MapReader& wall, const CaseConfig& c, size_t index) {
   return w;
 }
 
-ProbeConfig read_probe(MapReader& probe, size_t index, int dimension) {
+ProbeConfig read_probe(MapReader& probe, size_t index, const CaseConfig& c) {
+  const int dimension = c.dimension;
   ProbeConfig p;
   p.line = probe.line();
   const std::string type = probe.required<std::string>("type");
@@ -81,9 +83,23 @@ ProbeConfig read_probe(MapReader& probe, size_t index, int dimension) {
     p.point = probe.required<Vec3>("point");
   } else if (type == "water_height") {
     p.kind = ProbeKind::kWaterHeight;
+    p.unit = "m";
     p.point = probe.required<Vec3>("point");
+  } else if (type == "flux") {
+    p.kind = ProbeKind::kBoundaryFlux;
+    p.unit = dimension == 2 ? "m^2/s" : "m^3/s";
+    const std::string name = probe.required<std::string>("boundary");
+    std::vector<std::string> names;
+    for (const BoundaryConfig& b : c.boundaries) names.push_back(b.name);
+    const auto found = std::find(names.begin(), names.end(), name);
+    if (found == names.end()) {
+      if (names.empty()) probe.fail("boundary", "the case has no boundaries");
+      probe.fail_choice("boundary", "boundary", name, names);
+    }
+    p.boundary = static_cast<std::size_t>(found - names.begin());
   } else if (type == "surge_front") {
     p.kind = ProbeKind::kSurgeFront;
+    p.unit = "m";
     const std::string axis = probe.optional<std::string>("axis", "x");
     if (axis != "x" && axis != "y") probe.fail("axis", "expected x or y");
     if (axis == "y" && dimension == 2) {
@@ -91,7 +107,8 @@ ProbeConfig read_probe(MapReader& probe, size_t index, int dimension) {
     }
     p.axis = axis == "x" ? 0 : 1;
   } else {
-    probe.fail_choice("type", "probe type", type, {"pressure", "water_height", "surge_front"});
+    probe.fail_choice("type", "probe type", type,
+                      {"pressure", "water_height", "surge_front", "flux"});
   }
   probe.finish();
   return p;
@@ -266,8 +283,21 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
   index = 0;
   for (auto& wall : top.list_of_maps("walls")) c.walls.push_back(read_wall(wall, c, index++));
   index = 0;
-  for (auto& probe : top.list_of_maps("probes"))
-    c.probes.push_back(read_probe(probe, index++, c.dimension));
+  for (auto& entry : top.list_of_maps("boundaries")) {
+    c.boundaries.push_back(read_boundary(entry, index++, c.domain, c.dimension, file_name));
+    for (std::size_t k = 0; k + 1 < c.boundaries.size(); ++k) {
+      const BoundaryConfig& earlier = c.boundaries[k];
+      if (earlier.axis == c.boundaries.back().axis && earlier.upper == c.boundaries.back().upper) {
+        entry.fail("side",
+                   fmt::format("side {} is already {}'s", earlier.side_name(), earlier.key));
+      }
+    }
+  }
+  if (!c.boundaries.empty() && !c.has_fluid()) {
+    top.fail("boundaries", "a case of bodies alone (no 'fluid') has no open boundaries");
+  }
+  index = 0;
+  for (auto& probe : top.list_of_maps("probes")) c.probes.push_back(read_probe(probe, index++, c));
 
   if (top.has("compare")) c.compare = read_compare(top);
 

@@ -85,6 +85,9 @@ void add_probes(const std::string& path, const std::vector<ProbeConfig>& probes,
       case ProbeKind::kPressure:
         out.emplace_back(probe.name + " peak [Pa]", *std::max_element(v.begin(), v.end()));
         break;
+      case ProbeKind::kBoundaryFlux:
+        out.emplace_back(probe.name + " end [" + probe.unit + "]", v.back());
+        break;
     }
   }
 }

@@ -14,7 +14,7 @@ Probes::Probes(const std::vector<io::ProbeConfig>& probes, const std::string& cs
 std::vector<std::string> Probes::labels() const {
   std::vector<std::string> out;
   for (const auto& p : probes_) {
-    out.push_back(p.name + (p.kind == io::ProbeKind::kPressure ? " [Pa]" : " [m]"));
+    out.push_back(p.name + " [" + p.unit + "]");
   }
   return out;
 }
@@ -31,6 +31,9 @@ std::vector<double> Probes::measure(const FluidObservation& fluid) const {
         break;
       case io::ProbeKind::kSurgeFront:
         row.push_back(fluid.surge_front(p.axis));
+        break;
+      case io::ProbeKind::kBoundaryFlux:
+        row.push_back(fluid.boundary_flux(p.boundary));
         break;
     }
   }

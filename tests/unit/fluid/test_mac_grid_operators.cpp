@@ -122,7 +122,7 @@ double annulus_pressure_error(int n) {
   CellField phi(cells.size());
   for (std::size_t k = 0; k < phi.size(); ++k)
     phi[k] = (cells.position(cells.coordinates(k)) - centre).norm() - r2;
-  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0), {}};
+  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0), {}, {}};
   for (int a = 0; a < 2; ++a) {
     const Lattice<2> faces = grid.face_lattice(a);
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -172,7 +172,7 @@ TEST(MacProjection, LeavesNoDivergenceBesideAMovingSolid) {
   const Lattice<2> cells = grid.cell_lattice();
   const Lattice<2> nodes = grid.node_lattice();
   CellField phi(cells.size(), -1.0);  // all water, closed box
-  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0), {}};
+  SolidFaces<2> solid{make_face_field(grid, 1.0), make_face_field(grid, 0.0), {}, {}};
   for (int a = 0; a < 2; ++a) {
     const Lattice<2> faces = grid.face_lattice(a);
     for (std::size_t f = 0; f < faces.size(); ++f) {

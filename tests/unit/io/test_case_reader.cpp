@@ -356,5 +356,42 @@ TEST(CaseReader, TravelDirectionIsMadeHorizontalAndUnit) {
             "case.yaml:11: key 'travel_direction': must not be zero");
 }
 
+// Open boundaries as documented: sides, kinds, profile, depth; a flux probe names one; an inlet's
+// speed table interpolates linearly and holds its ends.
+TEST(CaseReader, ReadsOpenBoundariesAndTheirFluxProbes) {
+  const CaseConfig c = parse_case(
+      kMinimal +
+          "boundaries:\n"
+          "  - {name: in, type: inlet, side: x-, profile: parabolic, mean_speed: 0.2, depth: 1}\n"
+          "  - {type: outlet, side: x+, pressure: 30}\n"
+          "probes:\n"
+          "  - {name: out, type: flux, boundary: outlet1}\n",
+      "case.yaml");
+  ASSERT_EQ(c.boundaries.size(), 2u);
+  const BoundaryConfig& in = c.boundaries[0];
+  EXPECT_EQ(in.kind, BoundaryKind::kInlet);
+  EXPECT_EQ(in.side_name(), "x-");
+  EXPECT_EQ(in.profile, InletProfile::kParabolic);
+  EXPECT_EQ(in.speed_at(7), 0.2);
+  ASSERT_TRUE(in.depth.has_value());
+  EXPECT_EQ(*in.depth, 1.0);
+  const BoundaryConfig& out = c.boundaries[1];
+  EXPECT_EQ(out.name, "outlet1");
+  EXPECT_EQ(out.kind, BoundaryKind::kOutlet);
+  EXPECT_TRUE(out.upper);
+  EXPECT_EQ(out.pressure, 30);
+  EXPECT_FALSE(out.depth.has_value());
+  ASSERT_EQ(c.probes.size(), 1u);
+  EXPECT_EQ(c.probes[0].kind, ProbeKind::kBoundaryFlux);
+  EXPECT_EQ(c.probes[0].boundary, 1u);
+  EXPECT_EQ(c.probes[0].unit, "m^2/s");
+
+  BoundaryConfig table;
+  table.speed_table = {{1, 0.0}, {3, 0.4}};
+  EXPECT_EQ(table.speed_at(0), 0.0);
+  EXPECT_NEAR(table.speed_at(2.5), 0.3, 1e-15);
+  EXPECT_EQ(table.speed_at(9), 0.4);
+}
+
 }  // namespace
 }  // namespace sluice::io

@@ -40,6 +40,7 @@ ModelEntry mac_entry() {
   // by a contact is immobile to the projection and takes no load (docs/architecture.md).
   entry.schemes = {"projection", "held-loads"};
   entry.one_rank_only = "its grid is not split over ranks yet";
+  entry.open_boundaries = true;
   return entry;
 }
 

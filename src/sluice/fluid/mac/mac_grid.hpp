@@ -117,6 +117,12 @@ struct MacGrid {
   std::size_t cell_count() const { return cell_lattice().size(); }
 };
 
+// The share of a cell that the level set's surface leaves in the water (a smeared step of
+// width h).
+inline Real water_fraction(Real phi, Real h) {
+  return std::clamp(0.5 - phi / h, 0.0, 1.0);
+}
+
 // A value per cell, and one per face of each axis.
 using CellField = std::vector<Real>;
 template <int D>

@@ -20,10 +20,10 @@ namespace {
 // How far into the air [cells] the velocity is extended each step.
 constexpr Real kExtensionBand = 5;
 
-// The share of a cell that phi's surface leaves in the water (a smeared step of width h).
-Real water_fraction(Real phi, Real h) {
-  return std::clamp(0.5 - phi / h, 0.0, 1.0);
-}
+// The nearest a solid's surface is taken to a face in the viscous term's no-slip condition, as
+// a share of the spacing: nearer, the face all but takes the solid's velocity, and its load
+// stays finite.
+constexpr Real kSmallestWallTheta = 0.05;
 
 std::vector<AxisBox> block_boxes(const io::CaseConfig& config) {
   std::vector<AxisBox> out;
@@ -43,13 +43,25 @@ MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& con
       density_(config.fluid.density),
       viscosity_(config.fluid.kinematic_viscosity),
       geometry_(bodies),
-      solid_(grid_, bodies),
+      solid_(grid_, bodies,
+             OpenBoundaries<D>(grid_, config.boundaries, config.fluid.density, -gravity_[D - 1],
+                               config.domain.min[2])),
       projection_(make_sparse_solver(
           solver_, {parameters.tolerance, parameters.max_iterations, parameters.hypre})),
       surface_(grid_, level_set_of_blocks<D>(grid_, block_boxes(config), config.domain),
                parameters.particles_per_cell, parameters.reinitialise_every),
       motion_(bodies.motion()),
-      loads_(bodies.body_count()) {
+      loads_(bodies.body_count()),
+      viscous_loads_(bodies.body_count()) {
+  for (const io::BoundaryConfig& b : config.boundaries) {
+    // An open channel 4 m long with its inflow ramped up over 3 s (20 s) broke up at 28 s
+    // (34 s): the velocity of its surface layer grew, with either advection scheme.
+    if (b.depth) {
+      throw InputError(config.file(), b.line, b.key + ".depth",
+                       "the mac model's open boundaries are for a channel full of water: a "
+                       "free-surface channel (depth) is not stable yet");
+    }
+  }
   for (const auto& b : config.fluid.blocks) {
     if (b.velocity.norm() > 0) {
       throw InputError(config.file(), b.line, "fluid.blocks", "the mac model starts from rest");
@@ -59,11 +71,13 @@ MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& con
   now_.pressure.assign(grid_.cell_count(), 0);
   for (int a = 0; a < D; ++a) valid_[a].assign(now_.u[a].size(), 0);
   surface_.carry_through(solid_.solid_cells());
+  fill_inflow();
   // The pressure of the water at rest: one projection of gravity over a unit step, the
   // velocity it leaves discarded.
   add_forces(1.0);
   project(1.0, false);
   now_.u = make_face_field(grid_);
+  for (Wrench& load : viscous_loads_) load = Wrench{};  // of that unit step: none at rest
   remember_good(0);
 }
 
@@ -84,7 +98,8 @@ void MacModel<D>::append_stages(StageList&, StageList& after_bodies) {
       make_stage<const StepClock>("advect", [this](const StepClock& c) { advect(c.dt); }));
   after_bodies.push_back(
       make_stage<const StepClock>("forces", [this](const StepClock& c) { add_forces(c.dt); }));
-  after_bodies.push_back(make_stage<const StepClock>("boundaries", [this](const StepClock&) {
+  after_bodies.push_back(make_stage<const StepClock>("boundaries", [this](const StepClock& c) {
+    solid_.at_time(c.time + c.dt);
     if (motion_.empty()) return;
     solid_.place_bodies(motion_);
     surface_.carry_through(solid_.solid_cells());
@@ -105,42 +120,125 @@ void MacModel<D>::advect(double dt) {
   }
   surface_.advance(now_.u, dt);
   now_.u = std::move(advected);
+  fill_inflow();
+}
+
+template <int D>
+void MacModel<D>::fill_inflow() {
+  const OpenBoundaries<D>& open = solid_.open_boundaries();
+  if (open.empty()) return;
+  CellField phi = surface_.phi();
+  open.fill_inflow(phi);
+  surface_.replace_phi(std::move(phi));
+  open.fill_inflow(now_.u);
 }
 
 template <int D>
 void MacModel<D>::add_forces(double dt) {
-  if (viscosity_ > 0) {
-    // Explicit diffusion of each component; beyond the grid's boundary the wall's surface
-    // velocity holds the fluid (no slip, the wall half a cell out).
-    const Real k = viscosity_ * dt / (grid_.h * grid_.h);
-    for (int a = 0; a < D; ++a) {
-      const Lattice<D> faces = grid_.face_lattice(a);
-      const std::vector<Real>& u = now_.u[a];
-      std::vector<Real> out(u.size());
-      exec::Default::for_each(u.size(), [&](std::size_t f) {
-        const GridIndex<D> c = faces.coordinates(f);
-        Real laplacian = 0;
-        for (int b = 0; b < D; ++b) {
-          for (const int side : {-1, 1}) {
-            GridIndex<D> n = c;
-            n[b] += side;
-            if (faces.contains(n)) {
-              laplacian += u[faces.index(n)] - u[f];
-            } else if (b != a) {
-              Vec<D> beyond = faces.position(c);
-              beyond[b] += side * 0.5 * grid_.h;
-              laplacian += 2 * (solid_.wall_velocity_at(beyond)[a] - u[f]);
-            }
-          }
-        }
-        out[f] = u[f] + k * laplacian;
-      });
-      now_.u[a] = std::move(out);
-    }
-  }
+  if (viscosity_ > 0) diffuse(dt);
   for (int a = 0; a < D; ++a) {
     if (gravity_[a] == 0) continue;
     for (Real& v : now_.u[a]) v += dt * gravity_[a];
+  }
+}
+
+template <int D>
+void MacModel<D>::diffuse(double dt) {
+  // Beyond the grid's boundary the wall's surface velocity holds the fluid half a cell out (an
+  // inlet's: none across it; an outlet lets it through, zero gradient). Inside the grid, a
+  // neighbour within a solid is replaced by the solid's velocity where the segment to it
+  // crosses the surface (the ghost-fluid Dirichlet condition of Gibou et al. 2002), taken
+  // implicitly so that a surface close to a face keeps the step stable.
+  const Real k = viscosity_ * dt / (grid_.h * grid_.h);
+  const Lattice<D> nodes = grid_.node_lattice();
+  const std::vector<Real>& node_distance = solid_.node_distance();
+  const OpenBoundaries<D>& open = solid_.open_boundaries();
+  struct Crossing {
+    Real theta;     // of the way from the face to its neighbour
+    Real velocity;  // the solid's there, this component
+    int body;       // or -1: a wall
+    Vec<D> at;
+  };
+  for (auto& load : viscous_loads_) load = Wrench{};
+  for (int a = 0; a < D; ++a) {
+    const Lattice<D> faces = grid_.face_lattice(a);
+    const std::vector<Real>& u = now_.u[a];
+    std::vector<Real> distance(u.size());
+    exec::Default::for_each_light(u.size(), [&](std::size_t f) {
+      distance[f] = nodes.sample(node_distance, faces.position(faces.coordinates(f)));
+    });
+    // The explicit sum over a face's neighbours in the fluid and beyond the grid, each solid
+    // neighbour handed to `on_solid`.
+    auto stencil = [&](std::size_t f, auto&& on_solid) {
+      const GridIndex<D> c = faces.coordinates(f);
+      Real sum = 0;
+      for (int b = 0; b < D; ++b) {
+        for (const int side : {-1, 1}) {
+          GridIndex<D> n = c;
+          n[b] += side;
+          if (!faces.contains(n)) {
+            if (b == a) continue;
+            const io::BoundaryConfig* beyond = open.beyond(b, side > 0);
+            if (beyond != nullptr && beyond->kind == io::BoundaryKind::kOutlet) continue;
+            Vec<D> x = faces.position(c);
+            x[b] += side * 0.5 * grid_.h;
+            const Real wall = beyond != nullptr ? 0 : solid_.wall_velocity_at(x)[a];
+            sum += 2 * (wall - u[f]);
+            continue;
+          }
+          const std::size_t m = faces.index(n);
+          if (distance[f] >= 1.5 * grid_.h || distance[m] >= 0) {
+            sum += u[m] - u[f];
+            continue;
+          }
+          Crossing cross;
+          cross.theta = std::max(kSmallestWallTheta, distance[f] / (distance[f] - distance[m]));
+          cross.at = faces.position(c);
+          cross.at[b] += side * cross.theta * grid_.h;
+          cross.body = solid_.faces().body[a][m];
+          if (cross.body >= 0) {
+            const BodyKinematics& body = motion_[static_cast<std::size_t>(cross.body)];
+            const Vec3 r = to_3d<D>(cross.at) - body.position;
+            cross.velocity = from_3d<D>(body.velocity + body.angular_velocity.cross(r))[a];
+          } else {
+            cross.velocity = solid_.wall_velocity_at(cross.at)[a];
+          }
+          on_solid(cross);
+        }
+      }
+      return sum;
+    };
+    std::vector<Real> out(u.size());
+    std::vector<char> beside_solid(u.size(), 0);
+    exec::Default::for_each(u.size(), [&](std::size_t f) {
+      if (distance[f] < 0) {  // within a solid: the projection sets it
+        out[f] = u[f];
+        return;
+      }
+      Real weight = 0, pull = 0;
+      const Real sum = stencil(f, [&](const Crossing& cross) {
+        weight += 1 / cross.theta;
+        pull += cross.velocity / cross.theta;
+      });
+      out[f] = (u[f] + k * (sum + pull)) / (1 + k * weight);
+      beside_solid[f] = weight > 0;
+    });
+    // The momentum the solids gave the water, in the faces' order: each body's viscous load.
+    const Real face_mass = density_ * std::pow(grid_.h, D);
+    for (std::size_t f = 0; f < u.size(); ++f) {
+      if (!beside_solid[f]) continue;
+      stencil(f, [&](const Crossing& cross) {
+        if (cross.body < 0) return;
+        Vec<D> force = Vec<D>::Zero();
+        force[a] = face_mass * k * (out[f] - cross.velocity) / (cross.theta * dt);
+        Wrench& load = viscous_loads_[static_cast<std::size_t>(cross.body)];
+        const Vec3 f3 = to_3d<D>(force);
+        load.force += f3;
+        load.moment +=
+            (to_3d<D>(cross.at) - motion_[static_cast<std::size_t>(cross.body)].position).cross(f3);
+      });
+    }
+    now_.u[a] = std::move(out);
   }
 }
 
@@ -171,11 +269,22 @@ void MacModel<D>::project(double dt, bool moving) {
     // The bodies' contacts hold as joints through the solve; where the pressure it gives would
     // have a contact pull a body onto what it stands on (water squeezed under a wheel), that
     // contact lets go and the solve is made again from the same state.
+    const Eigen::MatrixXd mobility = geometry_.joined_mobility();
+    // The viscous stress's impulse over the step, through the same mobility.
+    Eigen::VectorXd viscous(6 * static_cast<Eigen::Index>(bodies.size()));
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      viscous.segment<3>(6 * static_cast<Eigen::Index>(b)) = dt * viscous_loads_[b].force;
+      viscous.segment<3>(6 * static_cast<Eigen::Index>(b) + 3) = dt * viscous_loads_[b].moment;
+    }
+    if (viscous.squaredNorm() > 0) {
+      const Eigen::VectorXd change = mobility * viscous;
+      for (std::size_t b = 0; b < bodies.size(); ++b)
+        bodies[b].velocity += change.segment<6>(6 * static_cast<Eigen::Index>(b));
+    }
     const FaceField<D> u = now_.u;
     const CellField pressure = now_.pressure;
     const FaceMarks<D> valid = valid_;
     const std::vector<ProjectedBody> before = bodies;
-    const Eigen::MatrixXd mobility = geometry_.joined_mobility();
     last_projection_ = projection_.project(grid_, surface_.phi(), solid_.faces(), dt, density_,
                                            now_.u, now_.pressure, valid_, bodies, &mobility);
     Eigen::VectorXd impulse(6 * static_cast<Eigen::Index>(bodies.size()));
@@ -258,7 +367,17 @@ void MacModel<D>::receive_body_motion(const std::vector<BodyKinematics>& motion)
 
 template <int D>
 std::vector<Wrench> MacModel<D>::body_loads(const std::vector<BodyKinematics>&) const {
-  return loads_;
+  std::vector<Wrench> total = loads_;
+  for (std::size_t b = 0; b < total.size(); ++b) {
+    total[b].force += viscous_loads_[b].force;
+    total[b].moment += viscous_loads_[b].moment;
+  }
+  return total;
+}
+
+template <int D>
+double MacModel<D>::boundary_flux(std::size_t index) const {
+  return solid_.open_boundaries().outflow(index, now_.u, surface_.phi());
 }
 
 template <int D>
@@ -418,7 +537,7 @@ std::vector<std::pair<std::string, double>> MacModel<D>::counters() const {
 
 template <int D>
 void MacModel<D>::archive_state(StateArchive& a) {
-  a(now_.u, now_.pressure, valid_, motion_, loads_);
+  a(now_.u, now_.pressure, valid_, motion_, loads_, viscous_loads_);
   projection_.archive_state(a);
   surface_.archive_state(a);
   a(projections_, pressure_iterations_, unconverged_, releases_);

@@ -39,6 +39,7 @@ class MacModel : public FluidSystem,
   void append_stages(StageList& before_bodies, StageList& after_bodies) override;
   TimeStep next_time_step() const override;
   void receive_body_motion(const std::vector<BodyKinematics>& motion) override;
+  // The pressure's loads of the last projection and the viscous stress's of the last step.
   std::vector<Wrench> body_loads(const std::vector<BodyKinematics>& motion) const override;
   void solve_body_velocities() override { solves_body_velocities_ = true; }
   std::vector<Vec6> solved_body_velocities() const override { return solved_velocities_; }
@@ -47,6 +48,7 @@ class MacModel : public FluidSystem,
   double pressure_at(const Vec3& x) const override;
   double water_height_at(const Vec3& gauge) const override;
   double surge_front(int axis) const override;
+  double boundary_flux(std::size_t index) const override;
   std::optional<std::string> check(const StepClock& clock) const override;
   void remember_good(double time) override;
   FluidView last_good_view() const override { return view_of(last_good_.phi, last_good_); }
@@ -75,7 +77,12 @@ class MacModel : public FluidSystem,
   };
 
   void advect(double dt);
+  // The level set beside the inlets: their water.
+  void fill_inflow();
   void add_forces(double dt);
+  // Explicit diffusion of each velocity component, no slip on the solids; the bodies' share
+  // of the momentum it moves becomes their viscous load.
+  void diffuse(double dt);
   // `moving`: the bodies' velocities are unknowns of the projection; else the bodies hold
   // still. Coupled by held loads, the bodies advanced with the last step's loads, which are
   // taken out of their velocities first; in the projection scheme they advanced without them,
@@ -100,6 +107,7 @@ class MacModel : public FluidSystem,
   FreeSurface<D> surface_;
   std::vector<BodyKinematics> motion_;
   std::vector<Wrench> loads_;            // the pressure's on each body, from the last projection
+  std::vector<Wrench> viscous_loads_;    // the viscous stress's on each body, from the last step
   bool solves_body_velocities_ = false;  // the projection scheme
   std::vector<Vec6> solved_velocities_;  // the bodies', from the last projection (that scheme)
   Fields now_;

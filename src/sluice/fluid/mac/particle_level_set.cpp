@@ -35,7 +35,16 @@ void ParticleLevelSet<D>::reseed(const MacGrid<D>& grid, const CellField& phi) {
   const Lattice<D> cells = grid.cell_lattice();
   const Real h = grid.h;
   const Real band = band_ * h;
-  std::erase_if(markers_, [&](const Marker& m) { return std::abs(cells.sample(phi, m.x)) > band; });
+  // Dropped too: those carried out of the grid (through an outlet), which sampling would hold
+  // on its boundary.
+  auto outside = [&](const Marker& m) {
+    for (int a = 0; a < D; ++a)
+      if (m.x[a] < grid.origin[a] || m.x[a] > grid.origin[a] + grid.cells[a] * h) return true;
+    return false;
+  };
+  std::erase_if(markers_, [&](const Marker& m) {
+    return outside(m) || std::abs(cells.sample(phi, m.x)) > band;
+  });
   std::vector<int> count(cells.size(), 0);
   for (const Marker& m : markers_) {
     GridIndex<D> c;

@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sluice/exec/policy.hpp"
 
@@ -61,6 +62,12 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
     const int b = body_of(a, f);
     return b < 0 ? solid.velocity[a][f] : face_jacobian(a, f, b).dot(bodies[b].velocity);
   };
+  // An outlet's pressure beyond a boundary face, scaled as the unknowns (p dt / (rho h)), or NaN.
+  const Real scale = dt / (density * grid.h);
+  auto outlet_of = [&](int a, std::size_t f) {
+    return solid.outlet_pressure[a].empty() ? std::numeric_limits<Real>::quiet_NaN()
+                                            : solid.outlet_pressure[a][f] * scale;
+  };
 
   unknown_.assign(n, -1);
   int rows = 0;
@@ -84,7 +91,7 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
     const int row = unknown_[k];
     if (row < 0) continue;
     const GridIndex<D> c = cells.coordinates(k);
-    double diagonal = 0, divergence = 0;
+    double diagonal = 0, divergence = 0, rhs_outlet = 0;
     for (int a = 0; a < D; ++a) {
       for (int side = 0; side < 2; ++side) {
         const std::size_t f = face_of(c, a, side);
@@ -102,6 +109,11 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
         if (cells.contains(nb) && is_water(cells.index(nb))) {
           diagonal += w;
           entries.emplace_back(row, unknown_[cells.index(nb)], -w);
+        } else if (const Real q_out = outlet_of(a, f); !cells.contains(nb) && !std::isnan(q_out)) {
+          // The outlet's pressure on the face, half a cell from the centre.
+          diagonal += 2 * w;
+          rhs_outlet += 2 * w * q_out;
+          touches_air[static_cast<std::size_t>(row)] = 1;
         } else {
           const Real beyond = cells.contains(nb) ? phi[cells.index(nb)] : 0.5 * grid.h;
           diagonal += w / theta_towards_air(phi[k], std::max(beyond, Real(0)));
@@ -110,7 +122,7 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
       }
     }
     entries.emplace_back(row, row, diagonal);
-    rhs[row] = -divergence;
+    rhs[row] = rhs_outlet - divergence;
   }
   // A body of water with no free surface (a closed cavity) fixes its pressure's level at one
   // cell: the rows of a closed region sum to zero, so that cell's pressure is 0 exactly.
@@ -228,11 +240,15 @@ ProjectionReport PressureProjection<D>::project(const MacGrid<D>& grid, const Ce
       const std::size_t ku = has_upper ? cells.index(upper) : 0;
       const bool water_lower = has_lower && is_water(kl), water_upper = has_upper && is_water(ku);
       if (!water_lower && !water_upper) return;
-      // Beside air, the ghost pressure that puts p = 0 on the interface.
+      // Beside air, the ghost pressure that puts p = 0 on the interface; beyond an outlet, the
+      // one that puts its pressure on the face.
       auto ghost = [&](std::size_t water, bool has_other, std::size_t other) {
+        const Real q_water = q[static_cast<Eigen::Index>(water)];
+        if (const Real q_out = outlet_of(a, f); !has_other && !std::isnan(q_out))
+          return 2 * q_out - q_water;
         const Real beyond = has_other ? phi[other] : 0.5 * grid.h;
         const Real theta = theta_towards_air(phi[water], std::max(beyond, Real(0)));
-        return q[static_cast<Eigen::Index>(water)] * (theta - 1) / theta;
+        return q_water * (theta - 1) / theta;
       };
       const Real pl = water_lower ? q[static_cast<Eigen::Index>(kl)] : ghost(ku, has_lower, kl);
       const Real pu = water_upper ? q[static_cast<Eigen::Index>(ku)] : ghost(kl, has_upper, ku);

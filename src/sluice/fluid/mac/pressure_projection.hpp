@@ -23,6 +23,9 @@ struct SolidFaces {
   FaceField<D> open;
   FaceField<D> velocity;
   std::array<std::vector<int>, D> body;  // the body whose velocity a face has, or -1
+  // On the grid's boundary, an outlet's pressure [Pa] beyond the face, held on the face itself;
+  // NaN, or no values at all: none (fluid/mac/open_boundaries.hpp).
+  FaceField<D> outlet_pressure;
 };
 
 // A body in the projection: its velocity (linear, angular) is an unknown of the pressure

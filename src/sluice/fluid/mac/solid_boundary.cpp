@@ -66,8 +66,9 @@ Real control_volume_open_fraction(const Lattice<D>& nodes, const std::vector<Rea
 }  // namespace
 
 template <int D>
-SolidBoundary<D>::SolidBoundary(const MacGrid<D>& grid, const BodyGeometry& geometry)
-    : grid_(grid), geometry_(&geometry) {
+SolidBoundary<D>::SolidBoundary(const MacGrid<D>& grid, const BodyGeometry& geometry,
+                                OpenBoundaries<D> open)
+    : grid_(grid), geometry_(&geometry), open_(std::move(open)) {
   const Lattice<D> nodes = grid.node_lattice();
   wall_nodes_.resize(nodes.size());
   exec::Default::for_each(nodes.size(), [&](std::size_t k) {
@@ -118,6 +119,12 @@ void SolidBoundary<D>::place_bodies(const std::vector<BodyKinematics>& motion) {
     });
   }
   fill_faces(motion);
+}
+
+template <int D>
+void SolidBoundary<D>::at_time(double time) {
+  time_ = time;
+  if (!open_.empty()) open_.apply(faces_, time_);
 }
 
 template <int D>
@@ -184,6 +191,7 @@ void SolidBoundary<D>::fill_faces(const std::vector<BodyKinematics>& motion) {
       faces_.body[a][f] = body;
     });
   }
+  if (!open_.empty()) open_.apply(faces_, time_);
   solid_cell_.assign(cells.size(), 0);
   const Lattice<D> node_lattice = nodes;
   exec::Default::for_each_light(cells.size(), [&](std::size_t k) {

@@ -8,6 +8,7 @@
 
 #include "sluice/coupling/body_geometry.hpp"
 #include "sluice/fluid/mac/mac_grid.hpp"
+#include "sluice/fluid/mac/open_boundaries.hpp"
 #include "sluice/fluid/mac/pressure_projection.hpp"
 
 namespace sluice {
@@ -15,10 +16,14 @@ namespace sluice {
 template <int D>
 class SolidBoundary {
  public:
-  SolidBoundary(const MacGrid<D>& grid, const BodyGeometry& geometry);
+  // `open`: the inlets and outlets, which take the place of any wall on their sides.
+  SolidBoundary(const MacGrid<D>& grid, const BodyGeometry& geometry, OpenBoundaries<D> open = {});
 
   // The faces with the bodies at `motion`.
   void place_bodies(const std::vector<BodyKinematics>& motion);
+  // The inlets' faces at `time`.
+  void at_time(double time);
+  const OpenBoundaries<D>& open_boundaries() const { return open_; }
 
   const SolidFaces<D>& faces() const { return faces_; }
   // Signed distance to the nearest solid at the cells' corners (negative inside).
@@ -35,6 +40,8 @@ class SolidBoundary {
 
   MacGrid<D> grid_;
   const BodyGeometry* geometry_;
+  OpenBoundaries<D> open_;
+  double time_ = 0;
   std::vector<Real> wall_nodes_;
   std::vector<Real> nodes_;
   std::vector<int> nearest_body_;  // per node: the body that sets its distance, or -1 (walls)

@@ -1,0 +1,40 @@
+// Open boundaries as read from a case file (docs/case-format.md, "Open boundaries"): a side of
+// the domain through which water enters at a prescribed velocity (an inlet) or leaves against a
+// prescribed pressure (an outlet). Plain data in SI units.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sluice::io {
+
+enum class BoundaryKind { kInlet, kOutlet };
+enum class InletProfile { kUniform, kParabolic };
+
+struct BoundaryConfig {
+  std::string name;
+  BoundaryKind kind = BoundaryKind::kInlet;
+  int axis = 0;        // the side's normal: 0 x, 1 y, 2 z
+  bool upper = false;  // the side at the domain's max along `axis`
+  // Inlet: the mean speed into the domain over the side's span [m/s], or (a table) its value
+  // by time, interpolated linearly and held at the ends; spread uniformly across the span or
+  // as a parabola that vanishes at its edges (in 3D the product of one per axis across).
+  InletProfile profile = InletProfile::kUniform;
+  double mean_speed = 0;
+  std::vector<std::pair<double, double>> speed_table;  // (time, mean speed)
+  // The water's surface height at the side (a free-surface channel): water enters below it,
+  // and an outlet's pressure is hydrostatic below it. Unset: the side's whole span.
+  std::optional<double> depth;
+  double pressure = 0;  // outlet: at the side (above `depth`), [Pa]
+  std::string key;      // "boundaries[N]", for messages
+  int line = 0;
+
+  // The inlet's mean speed at `time`.
+  double speed_at(double time) const;
+  // "x-", "z+", ...
+  std::string side_name() const { return std::string(1, "xyz"[axis]) + (upper ? "+" : "-"); }
+};
+
+}  // namespace sluice::io

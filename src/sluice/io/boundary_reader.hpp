@@ -1,0 +1,21 @@
+// Reading `boundaries:` entries (docs/case-format.md, "Open boundaries").
+#pragma once
+
+#include "sluice/geometry/axis_box.hpp"
+#include "sluice/io/boundary_config.hpp"
+#include "sluice/io/yaml_reader.hpp"
+
+namespace sluice::io {
+
+// One entry, index `index` of the list, of a case of `dimension` over `domain`. A speed table's
+// path is relative to the case file. Throws InputError naming the key.
+BoundaryConfig read_boundary(MapReader& map, std::size_t index, const AxisBox& domain,
+                             int dimension, const std::string& case_file);
+
+// The speed table's rows (columns `time`, `speed`), sorted in time; problems name `key` of
+// `owner`.
+std::vector<std::pair<double, double>> read_speed_table(const std::string& path,
+                                                        const MapReader& owner,
+                                                        const std::string& key);
+
+}  // namespace sluice::io
