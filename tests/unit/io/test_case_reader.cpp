@@ -393,5 +393,10 @@ TEST(CaseReader, ReadsOpenBoundariesAndTheirFluxProbes) {
   EXPECT_EQ(table.speed_at(9), 0.4);
 }
 
+TEST(CaseReader, FluxProbeOfACaseWithoutBoundaries) {
+  EXPECT_EQ(std::string(error_of(kMinimal + "probes:\n  - {type: flux, boundary: out}\n").what()),
+            "case.yaml:12: key 'probes[0].boundary': the case has no boundaries");
+}
+
 }  // namespace
 }  // namespace sluice::io
