@@ -89,7 +89,7 @@ int run_compare(const CompareOptions& o) {
   std::vector<ModelRun> runs;
   for (const std::string& model : models) {
     runs.push_back(model_run(model, base, o.settings));
-    check_case(io::read_case(o.case_path, runs.back().overrides));
+    check_case(io::read_case(o.case_path, runs.back().overrides), o.hypre);
   }
   const std::string out_dir = o.out_dir.empty() ? "out/compare_" + base.name : o.out_dir;
   std::error_code error;

@@ -8,6 +8,8 @@
 
 namespace sluice {
 
+class HypreSession;  // linear/hypre_session.hpp
+
 struct CompareOptions {
   std::string case_path;
   std::string models;                 // "a,b,..."; empty: the case's `compare:` entries, or all
@@ -16,6 +18,7 @@ struct CompareOptions {
   int jobs = 1;                       // runs at once: one, so that their wall times compare
   double end_time = 0;                // 0 = the case's
   std::string self;                   // this program, to start the runs
+  HypreSession* hypre = nullptr;      // the process's, for the checks (sim/runner.hpp)
 };
 
 // Reads and builds every model's case first, as `sluice check` (bad input, an unknown model

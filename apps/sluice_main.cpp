@@ -159,10 +159,12 @@ int main(int argc, char** argv) {
     }
     if (sweep->parsed()) {
       sweep_options.self = sluice::this_program();
+      sweep_options.hypre = &hypre;
       return sluice::run_sweep(sweep_options);
     }
     if (compare->parsed()) {
       compare_options.self = sluice::this_program();
+      compare_options.hypre = &hypre;
       return sluice::run_compare(compare_options);
     }
     sluice::exec::set_thread_count(threads);
@@ -185,7 +187,7 @@ int main(int argc, char** argv) {
     }
     const sluice::io::CaseConfig config = sluice::io::read_case(case_path, overrides);
     if (check->parsed()) {
-      const auto c = sluice::check_case(config);
+      const auto c = sluice::check_case(config, &hypre);
       if (ranks.rank() != 0) return sluice::kExitOk;
       fmt::print(
           "{}: {}D case '{}' is valid\n  {}: {} ({} fluid, {} wall)\n  bodies: {} ({} "

@@ -26,7 +26,7 @@ int run_sweep(const SweepOptions& o) {
   std::string name;
   for (const io::SweepRun& run : runs) {
     const io::CaseConfig config = io::read_case(o.case_path, run.overrides);
-    check_case(config);
+    check_case(config, o.hypre);
     name = config.name;
   }
   const std::string out_dir = o.out_dir.empty() ? "out/sweep_" + name : o.out_dir;

@@ -8,6 +8,8 @@
 
 namespace sluice {
 
+class HypreSession;  // linear/hypre_session.hpp
+
 struct SweepOptions {
   std::string case_path;
   std::vector<std::string> settings;  // the --set arguments
@@ -15,6 +17,7 @@ struct SweepOptions {
   int jobs = 0;                       // runs at once; 0 = as many as cores, at most the runs
   double end_time = 0;                // 0 = the case's
   std::string self;                   // this program, to start the runs
+  HypreSession* hypre = nullptr;      // the process's, for the checks (sim/runner.hpp)
 };
 
 // Checks every combination first, as `sluice check` (bad input: InputError before anything

@@ -330,10 +330,12 @@ RunSummary run(const io::CaseConfig& config, const RunOptions& options) {
 }
 
 template <int D>
-CheckSummary check(const io::CaseConfig& config) {
+CheckSummary check(const io::CaseConfig& config, HypreSession* hypre) {
   const SizeEstimate estimate = estimate_size(config);
   refuse_if_it_cannot_fit_here(config, estimate);
-  Simulation<D> sim(config);  // it solves nothing: no hypre session
+  ModelServices services;
+  services.hypre = hypre;
+  Simulation<D> sim(config, services);
   const FluidSize size = sim.fluid().observation().size();
   CheckSummary out;
   out.element_name = size.element_name;
@@ -360,8 +362,8 @@ RunSummary run_case(const io::CaseConfig& config, const RunOptions& options) {
   return summary;
 }
 
-CheckSummary check_case(const io::CaseConfig& config) {
-  return config.dimension == 2 ? check<2>(config) : check<3>(config);
+CheckSummary check_case(const io::CaseConfig& config, HypreSession* hypre) {
+  return config.dimension == 2 ? check<2>(config, hypre) : check<3>(config, hypre);
 }
 
 std::string stats_json(const RunSummary& r) {

@@ -79,8 +79,9 @@ struct CheckSummary {
 };
 
 // Builds the case's particles and model without running a step; first refuses (InputError at
-// `spacing`) a case whose estimated memory exceeds the machine's.
-CheckSummary check_case(const io::CaseConfig& config);
+// `spacing`) a case whose estimated memory exceeds the machine's. `hypre`: the process's session,
+// for a model that solves as it is built (mac's pressure at rest) with hypre's solver.
+CheckSummary check_case(const io::CaseConfig& config, HypreSession* hypre = nullptr);
 
 // The statistics JSON written by --stats.
 std::string stats_json(const RunSummary& summary);
