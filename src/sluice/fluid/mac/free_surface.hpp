@@ -3,7 +3,6 @@
 #pragma once
 
 #include <optional>
-#include <utility>
 
 #include "sluice/fluid/mac/mac_grid.hpp"
 #include "sluice/fluid/mac/particle_level_set.hpp"
@@ -29,8 +28,12 @@ class FreeSurface {
   void carry_through(const std::vector<char>& solid);
 
   const CellField& phi() const { return phi_; }
-  // The level set replaced where the case sets it (an inlet's water); the markers are kept.
-  void replace_phi(CellField phi) { phi_ = std::move(phi); }
+  // The level set edited where the case sets it (an inlet's water) by edit(phi); the markers
+  // are kept.
+  template <class Edit>
+  void edit_phi(Edit&& edit) {
+    edit(phi_);
+  }
   std::size_t marker_count() const { return markers_ ? markers_->size() : 0; }
 
   // Checkpoints: the level set, the markers, and the step count that paces reinitialisation.

@@ -127,9 +127,7 @@ template <int D>
 void MacModel<D>::fill_inflow() {
   const OpenBoundaries<D>& open = solid_.open_boundaries();
   if (open.empty()) return;
-  CellField phi = surface_.phi();
-  open.fill_inflow(phi);
-  surface_.replace_phi(std::move(phi));
+  surface_.edit_phi([&](CellField& phi) { open.fill_inflow(phi); });
   open.fill_inflow(now_.u);
 }
 

@@ -14,7 +14,18 @@ OpenBoundaries<D>::OpenBoundaries(const MacGrid<D>& grid, std::vector<io::Bounda
       density_(density),
       gravity_(gravity),
       floor_(domain_floor) {
-  for (const io::BoundaryConfig& side : sides_) side_faces_.push_back(faces_on(side));
+  for (const io::BoundaryConfig& side : sides_) {
+    const int a = grid_axis(side);
+    Layers layers;
+    layers.faces = in_layer(grid_.face_lattice(a), a, side.upper ? grid_.cells[a] : 0);
+    if (side.kind == io::BoundaryKind::kInlet) {
+      const int layer = side.upper ? grid_.cells[a] - 1 : 0;
+      layers.cells = in_layer(grid_.cell_lattice(), a, layer);
+      for (int b = 0; b < D; ++b)
+        if (b != a) layers.across[b] = in_layer(grid_.face_lattice(b), a, layer);
+    }
+    layers_.push_back(std::move(layers));
+  }
 }
 
 template <int D>
@@ -35,14 +46,11 @@ Real OpenBoundaries<D>::coverage(const io::BoundaryConfig& side, const Vec<D>& x
 }
 
 template <int D>
-std::vector<std::size_t> OpenBoundaries<D>::faces_on(const io::BoundaryConfig& side) const {
-  const int a = grid_axis(side);
-  const Lattice<D> faces = grid_.face_lattice(a);
+std::vector<std::size_t> OpenBoundaries<D>::in_layer(const Lattice<D>& lattice, int axis,
+                                                     int layer) {
   std::vector<std::size_t> out;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const int layer = faces.coordinates(f)[a];
-    if (layer == (side.upper ? grid_.cells[a] : 0)) out.push_back(f);
-  }
+  for (std::size_t k = 0; k < lattice.size(); ++k)
+    if (lattice.coordinates(k)[axis] == layer) out.push_back(k);
   return out;
 }
 
@@ -56,7 +64,8 @@ Real OpenBoundaries<D>::profile_at(const io::BoundaryConfig& side, const Vec<D>&
   for (int b = 0; b < D; ++b) {
     if (b == a) continue;
     const Real lo = grid_.origin[b];
-    const Real hi = std::min(lo + grid_.cells[b] * grid_.h, b == D - 1 ? surface : lo + 1e300);
+    Real hi = lo + grid_.cells[b] * grid_.h;
+    if (b == D - 1) hi = std::min(hi, surface);
     const Real s = (x[b] - lo) / (hi - lo);
     value *= std::max(Real(0), 6 * s * (1 - s));
   }
@@ -74,7 +83,7 @@ void OpenBoundaries<D>::apply(SolidFaces<D>& faces, double time) const {
     const Real inward = side.upper ? -1 : 1;
     const Real speed = side.speed_at(time);
     const Real surface = surface_of(side);
-    for (const std::size_t f : side_faces_[index]) {
+    for (const std::size_t f : layers_[index].faces) {
       const Vec<D> x = lattice.position(lattice.coordinates(f));
       if (side.kind == io::BoundaryKind::kInlet) {
         // Above the surface the side is a wall at rest: the inflow's water cannot leave by it.
@@ -96,14 +105,12 @@ void OpenBoundaries<D>::apply(SolidFaces<D>& faces, double time) const {
 template <int D>
 void OpenBoundaries<D>::fill_inflow(CellField& phi) const {
   const Lattice<D> cells = grid_.cell_lattice();
-  for (const io::BoundaryConfig& side : sides_) {
-    if (side.kind != io::BoundaryKind::kInlet) continue;
+  for (std::size_t index = 0; index < sides_.size(); ++index) {
+    const io::BoundaryConfig& side = sides_[index];
     const int a = grid_axis(side);
-    const int layer = side.upper ? grid_.cells[a] - 1 : 0;
     const Real surface = surface_of(side);
-    for (std::size_t k = 0; k < cells.size(); ++k) {
+    for (const std::size_t k : layers_[index].cells) {
       const GridIndex<D> c = cells.coordinates(k);
-      if (c[a] != layer) continue;
       // Water below the surface at least; above it the level the water beside has (no
       // gradient), so that the water piled against the side (or drawn down) keeps its level
       // and the side's surface makes no step. With no depth, water a cell deep at least.
@@ -118,17 +125,9 @@ void OpenBoundaries<D>::fill_inflow(CellField& phi) const {
 
 template <int D>
 void OpenBoundaries<D>::fill_inflow(FaceField<D>& u) const {
-  for (const io::BoundaryConfig& side : sides_) {
-    if (side.kind != io::BoundaryKind::kInlet) continue;
-    const int a = grid_axis(side);
-    const int layer = side.upper ? grid_.cells[a] - 1 : 0;
-    for (int b = 0; b < D; ++b) {
-      if (b == a) continue;
-      const Lattice<D> faces = grid_.face_lattice(b);
-      for (std::size_t f = 0; f < faces.size(); ++f)
-        if (faces.coordinates(f)[a] == layer) u[b][f] = 0;
-    }
-  }
+  for (const Layers& layers : layers_)
+    for (int b = 0; b < D; ++b)
+      for (const std::size_t f : layers.across[b]) u[b][f] = 0;
 }
 
 template <int D>
@@ -147,7 +146,7 @@ double OpenBoundaries<D>::outflow(std::size_t index, const FaceField<D>& u,
   const Real outward = side.upper ? 1 : -1;
   const Real area = std::pow(grid_.h, D - 1);
   double sum = 0;
-  for (const std::size_t f : side_faces_[index]) {
+  for (const std::size_t f : layers_[index].faces) {
     GridIndex<D> c = faces.coordinates(f);
     if (side.upper) c[a] -= 1;
     // An inlet's face velocity holds its covered share (0 above the surface).

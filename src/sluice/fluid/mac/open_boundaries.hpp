@@ -4,6 +4,7 @@
 // (hydrostatic below a depth) as a Dirichlet condition on the side itself.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "sluice/fluid/mac/pressure_projection.hpp"
@@ -39,7 +40,8 @@ class OpenBoundaries {
  private:
   // The grid axis of a side, and the faces on it.
   int grid_axis(const io::BoundaryConfig& side) const;
-  std::vector<std::size_t> faces_on(const io::BoundaryConfig& side) const;
+  // The points of `lattice` whose coordinate along `axis` is `layer`.
+  static std::vector<std::size_t> in_layer(const Lattice<D>& lattice, int axis, int layer);
   // The inflow's speed at face position x (the side's profile at mean speed 1).
   Real profile_at(const io::BoundaryConfig& side, const Vec<D>& x) const;
   Real surface_of(const io::BoundaryConfig& side) const;
@@ -48,7 +50,13 @@ class OpenBoundaries {
 
   MacGrid<D> grid_;
   std::vector<io::BoundaryConfig> sides_;
-  std::vector<std::vector<std::size_t>> side_faces_;  // each side's faces_on, found once
+  // What each side touches, found once: its faces; an inlet's the cells beside it and the faces
+  // across it in those cells (`across[b]`: of axis b, none along the side's own).
+  struct Layers {
+    std::vector<std::size_t> faces, cells;
+    std::array<std::vector<std::size_t>, D> across;
+  };
+  std::vector<Layers> layers_;
   Real density_ = 1000, gravity_ = 0, floor_ = 0;
 };
 
