@@ -73,6 +73,8 @@ CHECKS = [
     ("checkpoints resume to the same answer", "every model", r"Resume\."),
     ("F7 flow past a cylinder in a channel (Schäfer & Turek 1996, 2D-1), `mac`",
      "`cases/cylinder_channel_2d.yaml`", r"^OpenBoundaries\."),
+    ("F8 waves from a piston (Biésel, Madsen) and a damping zone, `mac`",
+     "`cases/wave_flume_2d.yaml`", r"^Waves\."),
 ]
 
 BUILDS = ("release", "baseline")

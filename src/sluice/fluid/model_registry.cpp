@@ -48,6 +48,12 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                                    "inlets and outlets",
                                    config.model_name));
     }
+    if (!entry->damping_zones && !config.damping.empty()) {
+      const io::DampingZone& z = config.damping.front();
+      throw InputError(config.file(), z.line, z.key,
+                       fmt::format("the {} model has no damping zones yet; the mac model has them",
+                                   config.model_name));
+    }
     return entry->make(config, bodies, services);
   }
   io::MapReader model(config.source, config.model, "model", config.model_line);

@@ -9,18 +9,37 @@
 #include "sluice/contact/contact_material.hpp"
 #include "sluice/core/types.hpp"
 #include "sluice/geometry/triangle_mesh.hpp"
+#include "sluice/waves/paddle_signal.hpp"
 
 namespace sluice::io {
 
 enum class BodyShape { kBox, kSphere, kCylinder, kMesh };
 enum class BodyMotion { kFree, kFixed, kPrescribed };
-enum class PrescribedKind { kConstantVelocity, kSinusoid, kTable };
+enum class PrescribedKind { kConstantVelocity, kSinusoid, kTable, kWavemaker };
+enum class PaddleKind { kPiston, kFlap };
 
 // One row of a prescribed-motion table: the pose at `time` (rotation as angles about x, y, z).
 struct PoseSample {
   double time = 0;
   Vec3 position = Vec3::Zero();
   Vec3 rotation = Vec3::Zero();
+};
+
+// A wave paddle at the x- end of a flume, making waves that travel towards +x: a piston moves
+// along x; a flap turns about y, about a hinge on the vertical line through the body's
+// position, `hinge_depth` below the still water line. Its displacement at the still water line
+// follows `signal` (waves/paddle_signal.hpp), found from the waves asked for as the case is read.
+struct WavemakerConfig {
+  PaddleKind paddle = PaddleKind::kPiston;
+  double water_depth = 0;         // [m], in front of the paddle
+  double still_water = 0;         // the still water line's height z [m]: the floor + water_depth
+  double hinge_depth = 0;         // flap [m]
+  bool irregular = false;         // a JONSWAP sea, else one regular wave train
+  double height = 0;              // regular: H [m]
+  double period = 0;              // regular: T [s]; irregular: the peak period
+  double significant_height = 0;  // irregular: H_m0 [m]
+  int order = 1;                  // regular piston: 2 adds Madsen's (1971) second harmonic
+  waves::PaddleSignal signal;
 };
 
 struct PrescribedConfig {
@@ -37,6 +56,7 @@ struct PrescribedConfig {
   // table: poses from a CSV file, sorted in time, interpolated linearly, held at the ends.
   std::string table_file;
   std::vector<PoseSample> table;
+  WavemakerConfig wavemaker;
 };
 
 struct BodyConfig {

@@ -11,6 +11,9 @@
 #include <tuple>
 
 #include "sluice/geometry/mesh_io.hpp"
+#include "sluice/waves/jonswap.hpp"
+#include "sluice/waves/linear_waves.hpp"
+#include "sluice/waves/paddle_transfer.hpp"
 
 namespace sluice::io {
 
@@ -25,7 +28,70 @@ Vec3 read_rotation(MapReader& map, const std::string& key, double unit) {
   return map.required<Vec3>(key) * unit;
 }
 
-PrescribedConfig read_prescribed(MapReader& map, const std::string& case_file) {
+// The waves a wavemaker makes and the paddle's signal for them (docs/case-format.md,
+// "Wavemakers").
+WavemakerConfig read_wavemaker(MapReader& map, const BodyContext& context) {
+  WavemakerConfig w;
+  if (!(context.gravity > 0)) map.fail("type", "a wavemaker needs gravity (the case has none)");
+  w.paddle = map.optional_choice("paddle", "piston", "paddle", {"piston", "flap"}) == "piston"
+                 ? PaddleKind::kPiston
+                 : PaddleKind::kFlap;
+  w.water_depth = map.required_positive("water_depth");
+  w.still_water = context.floor + w.water_depth;
+  if (w.paddle == PaddleKind::kFlap) {
+    w.hinge_depth = map.optional_positive("hinge_depth", w.water_depth);
+  } else if (map.has("hinge_depth")) {
+    map.fail("hinge_depth", "only read for a flap (a piston does not turn)");
+  }
+  const double hinge = w.paddle == PaddleKind::kFlap ? w.hinge_depth : waves::kPistonHinge;
+  const bool regular =
+      map.optional_choice("wave", "regular", "wave", {"regular", "jonswap"}) == "regular";
+  w.irregular = !regular;
+  std::vector<waves::WaveComponent> sea;
+  if (regular) {
+    w.height = map.required_positive("height");
+    w.period = map.required_positive("period");
+    const double omega = 2 * std::numbers::pi / w.period;
+    const double k = waves::wavenumber(omega, w.water_depth, context.gravity);
+    const double limit = waves::breaking_height(k, w.water_depth);
+    if (w.height >= limit) {
+      map.fail("height", fmt::format("{} m breaks: the limit at this period and depth is {:.4g} m "
+                                     "(Miche: H/L = 0.142 tanh kh, L = {:.4g} m)",
+                                     w.height, limit, 2 * std::numbers::pi / k));
+    }
+    w.order = map.optional<int>("order", 1);
+    if (w.order != 1 && w.order != 2) map.fail("order", "must be 1 or 2");
+    if (w.order == 2 && w.paddle == PaddleKind::kFlap) {
+      map.fail("order",
+               "second order is for a piston (Madsen 1971); a flap's (Schaeffer 1996) "
+               "is not implemented");
+    }
+    sea.push_back({w.height / 2, omega, map.optional<double>("phase_deg", 0.0) * kDegree});
+  } else {
+    waves::JonswapSea js;
+    js.significant_height = w.significant_height = map.required_positive("significant_height");
+    js.peak_period = w.period = map.required_positive("peak_period");
+    js.peak_enhancement = map.optional<double>("peak_enhancement", 3.3);
+    if (!(js.peak_enhancement >= 1)) map.fail("peak_enhancement", "must be 1 or more");
+    const int seed = map.optional<int>("seed", 1);
+    if (seed < 0) map.fail("seed", "must be zero or more");
+    js.seed = static_cast<std::uint64_t>(seed);
+    js.components = map.optional<int>("components", 256);
+    if (js.components < 1) map.fail("components", "must be 1 or more");
+    js.min_frequency = map.optional_positive("min_frequency", 0.5 / js.peak_period);
+    js.max_frequency = map.optional_positive("max_frequency", 3 / js.peak_period);
+    if (!(js.max_frequency > js.min_frequency)) {
+      map.fail("max_frequency", fmt::format("must exceed min_frequency ({} Hz)", js.min_frequency));
+    }
+    sea = waves::jonswap_components(js);
+  }
+  const double ramp = map.optional_non_negative("ramp_time", 2 * w.period);
+  w.signal = waves::paddle_signal(sea, w.water_depth, hinge, context.gravity, w.order == 2, ramp);
+  return w;
+}
+
+PrescribedConfig read_prescribed(MapReader& map, const BodyContext& context) {
+  const std::string& case_file = context.case_file;
   PrescribedConfig p;
   const std::string type = map.required<std::string>("type");
   if (type == "constant_velocity") {
@@ -42,8 +108,12 @@ PrescribedConfig read_prescribed(MapReader& map, const std::string& case_file) {
     const std::string file = map.required<std::string>("file");
     p.table_file = (std::filesystem::path(case_file).parent_path() / file).string();
     p.table = read_pose_table(p.table_file, map, "file");
+  } else if (type == "wavemaker") {
+    p.kind = PrescribedKind::kWavemaker;
+    p.wavemaker = read_wavemaker(map, context);
   } else {
-    map.fail_choice("type", "prescribed motion", type, {"constant_velocity", "sinusoid", "table"});
+    map.fail_choice("type", "prescribed motion", type,
+                    {"constant_velocity", "sinusoid", "table", "wavemaker"});
   }
   map.finish();
   return p;
@@ -181,7 +251,8 @@ void read_velocity_step(MapReader& contact, ContactConfig& c) {
   map.finish();
 }
 
-BodyConfig read_body(MapReader& map, std::size_t index, const std::string& case_file) {
+BodyConfig read_body(MapReader& map, std::size_t index, const BodyContext& context) {
+  const std::string& case_file = context.case_file;
   BodyConfig b;
   b.line = map.line();
   b.name = map.optional<std::string>("name", fmt::format("body{}", index));
@@ -218,7 +289,7 @@ BodyConfig read_body(MapReader& map, std::size_t index, const std::string& case_
     if (!map.has("prescribed"))
       map.fail("prescribed", "missing required key (motion is prescribed)");
     MapReader prescribed = map.map("prescribed");
-    b.prescribed = read_prescribed(prescribed, case_file);
+    b.prescribed = read_prescribed(prescribed, context);
   } else {
     map.fail_choice("motion", "motion", motion, {"free", "fixed", "prescribed"});
   }

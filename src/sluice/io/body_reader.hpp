@@ -9,9 +9,16 @@
 
 namespace sluice::io {
 
-// Reads one entry of `bodies` (loading its mesh or motion table, whose paths are taken
-// relative to the folder of `case_file`). Throws InputError naming the file, line and key.
-BodyConfig read_body(MapReader& body, std::size_t index, const std::string& case_file);
+// What reading a body needs from the rest of the case.
+struct BodyContext {
+  std::string case_file;  // a mesh's or motion table's path is taken relative to its folder
+  double gravity = 0;     // its magnitude [m/s^2] (a wavemaker's waves)
+  double floor = 0;       // the domain's lowest z (a wavemaker's water depth is above it)
+};
+
+// Reads one entry of `bodies` (loading its mesh or motion table). Throws InputError naming the
+// file, line and key.
+BodyConfig read_body(MapReader& body, std::size_t index, const BodyContext& context);
 
 // Reads one entry of `joints` (docs/case-format.md, "Joints"); its bodies are checked by name
 // when the bodies are built.

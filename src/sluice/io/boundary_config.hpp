@@ -37,4 +37,23 @@ struct BoundaryConfig {
   std::string side_name() const { return std::string(1, "xyz"[axis]) + (upper ? "+" : "-"); }
 };
 
+// A damping zone (a "sponge layer"): the water's velocity relaxed towards rest, at a rate that
+// grows from 0 at `from` to `strength` at `to` along `axis` as the square of the distance's
+// share, and stays at `strength` beyond `to` (`to` < `from`: a zone towards the axis's lower
+// end). Over a step dt the velocity is multiplied by exp(-rate dt).
+struct DampingZone {
+  int axis = 0;             // 0 x, 1 y, 2 z
+  double from = 0, to = 0;  // [m]
+  double strength = 0;      // [1/s]
+  std::string key;          // "damping[N]", for messages
+  int line = 0;
+
+  // The relaxation rate [1/s] at coordinate `c` along the axis.
+  double rate_at(double c) const {
+    const double s = (c - from) / (to - from);
+    if (s <= 0) return 0;
+    return s >= 1 ? strength : strength * s * s;
+  }
+};
+
 }  // namespace sluice::io

@@ -107,4 +107,31 @@ BoundaryConfig read_boundary(MapReader& map, std::size_t index, const AxisBox& d
   return b;
 }
 
+DampingZone read_damping_zone(MapReader& map, std::size_t index, const AxisBox& domain,
+                              int dimension) {
+  DampingZone z;
+  z.line = map.line();
+  z.key = fmt::format("damping[{}]", index);
+  const std::vector<std::string> axes =
+      dimension == 2 ? std::vector<std::string>{"x", "z"} : std::vector<std::string>{"x", "y", "z"};
+  const std::string axis = map.required<std::string>("axis");
+  if (std::find(axes.begin(), axes.end(), axis) == axes.end())
+    map.fail_choice("axis", "axis", axis, axes);
+  z.axis = axis[0] - 'x';
+  auto inside = [&](const std::string& key) {
+    const double c = map.required<double>(key);
+    if (!(c >= domain.min[z.axis] && c <= domain.max[z.axis])) {
+      map.fail(key, fmt::format("{} lies outside the domain along {} ({} to {})", c, axis,
+                                domain.min[z.axis], domain.max[z.axis]));
+    }
+    return c;
+  };
+  z.from = inside("from");
+  z.to = inside("to");
+  if (z.to == z.from) map.fail("to", "must differ from 'from' (the zone has no length)");
+  z.strength = map.required_positive("strength");
+  map.finish();
+  return z;
+}
+
 }  // namespace sluice::io

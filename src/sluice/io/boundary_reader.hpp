@@ -18,4 +18,9 @@ std::vector<std::pair<double, double>> read_speed_table(const std::string& path,
                                                         const MapReader& owner,
                                                         const std::string& key);
 
+// Reads one entry of `damping` (docs/case-format.md, "Damping zones"); its ends must lie in
+// the domain. Throws InputError naming the key.
+DampingZone read_damping_zone(MapReader& map, std::size_t index, const AxisBox& domain,
+                              int dimension);
+
 }  // namespace sluice::io

@@ -221,7 +221,7 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
 
   size_t index = 0;
   for (auto& body : top.list_of_maps("bodies")) {
-    c.bodies.push_back(read_body(body, index++, file_name));
+    c.bodies.push_back(read_body(body, index++, {file_name, c.gravity.norm(), c.domain.min[2]}));
     for (std::size_t k = 0; k + 1 < c.bodies.size(); ++k) {
       if (c.bodies[k].name == c.bodies.back().name) {
         body.fail("name",
@@ -295,6 +295,13 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
   }
   if (!c.boundaries.empty() && !c.has_fluid()) {
     top.fail("boundaries", "a case of bodies alone (no 'fluid') has no open boundaries");
+  }
+  index = 0;
+  for (auto& entry : top.list_of_maps("damping")) {
+    c.damping.push_back(read_damping_zone(entry, index++, c.domain, c.dimension));
+  }
+  if (!c.damping.empty() && !c.has_fluid()) {
+    top.fail("damping", "a case of bodies alone (no 'fluid') has no water to damp");
   }
   index = 0;
   for (auto& probe : top.list_of_maps("probes")) c.probes.push_back(read_probe(probe, index++, c));

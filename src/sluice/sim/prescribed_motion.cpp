@@ -20,8 +20,31 @@ Vec3 angular_velocity_from_rates(const Vec3& angles, const Vec3& rates) {
          rates[0] * (about_z * (about_y * Vec3::UnitX()));
 }
 
+namespace {
+
+// A paddle's pose: a piston moved along x by the signal's displacement; a flap turned about y
+// (positive turns carry its top towards +x) through atan(X / d), X the displacement at the
+// still water line, d the hinge's depth below it.
+ShapePose paddle_pose(const io::BodyConfig& body, double time) {
+  const io::WavemakerConfig& w = body.prescribed.wavemaker;
+  const double x = w.signal.displacement(time), v = w.signal.velocity(time);
+  const Eigen::Quaterniond rest = rotation_from_angles(body.rotation);
+  if (w.paddle == io::PaddleKind::kPiston) {
+    return {body.position + x * Vec3::UnitX(), rest, v * Vec3::UnitX(), Vec3::Zero()};
+  }
+  const double d = w.hinge_depth;
+  const Vec3 hinge(body.position[0], body.position[1], w.still_water - d);
+  const Eigen::AngleAxisd turn(std::atan2(x, d), Vec3::UnitY());
+  const Vec3 arm = turn * (body.position - hinge);
+  const Vec3 omega = (v * d / (d * d + x * x)) * Vec3::UnitY();
+  return {hinge + arm, Eigen::Quaterniond(turn) * rest, omega.cross(arm), omega};
+}
+
+}  // namespace
+
 ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
   const io::PrescribedConfig& p = body.prescribed;
+  if (p.kind == io::PrescribedKind::kWavemaker) return paddle_pose(body, time);
   Vec3 position = body.position, angles = body.rotation;
   Vec3 velocity = Vec3::Zero(), rates = Vec3::Zero();
   switch (p.kind) {
@@ -70,6 +93,8 @@ ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
       }
       break;
     }
+    case io::PrescribedKind::kWavemaker:
+      break;  // paddle_pose
   }
   return {position, rotation_from_angles(angles), velocity,
           angular_velocity_from_rates(angles, rates)};

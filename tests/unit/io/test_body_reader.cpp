@@ -12,6 +12,8 @@
 #include "sluice/core/errors.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/prescribed_motion.hpp"
+#include "sluice/waves/linear_waves.hpp"
+#include "sluice/waves/paddle_transfer.hpp"
 #include "support/scratch_dir.hpp"
 
 namespace sluice::io {
@@ -157,6 +159,74 @@ TEST(PrescribedMotion, ConstantVelocityMovesAndTurns) {
   EXPECT_NEAR(p.position[0], 0.5, 1e-15);
   const Vec3 turned = p.orientation * Vec3::UnitX();
   EXPECT_NEAR(turned[1], 1.0, 1e-15);  // a quarter turn about z
+}
+
+// A 2D case of one paddle centred at (0.15, height) over a floor at `floor`, with the
+// wavemaker's keys `keys`.
+std::string paddle_case(double floor, double height, const std::string& keys) {
+  return "dimension: 2\nspacing: 0.05\ndomain: {min: [0, " + std::to_string(floor) +
+         "], max: [4, 0.8]}\nend_time: 1\noutput_interval: 0.1\nbodies:\n"
+         "  - {shape: box, size: [0.1, 0.8], density: 1000, position: [0.15, " +
+         std::to_string(height) + "], motion: prescribed, prescribed: {type: wavemaker, " + keys +
+         "}}\n";
+}
+
+// A flap read from a case: its signal is the wave's height over Biésel's transfer function
+// for a flap hinged where the case says, and its top's crossing of the still water line
+// follows the signal's displacement while the body moves as one rigid piece.
+TEST(PrescribedMotion, FlapWavemakerTurnsAboutItsHingeByTheStroke) {
+  const CaseConfig c =
+      parse_case(paddle_case(-0.1, 0.3,
+                             "paddle: flap, water_depth: 0.5, hinge_depth: 0.4, height: 0.03, "
+                             "period: 1.2, ramp_time: 1.2"),
+                 "t.yaml");
+  const BodyConfig& b = c.bodies[0];
+  const WavemakerConfig& w = b.prescribed.wavemaker;
+  ASSERT_EQ(b.prescribed.kind, PrescribedKind::kWavemaker);
+  EXPECT_EQ(w.paddle, PaddleKind::kFlap);
+  EXPECT_DOUBLE_EQ(w.still_water, 0.4);  // the floor at -0.1
+  const double omega = 2 * std::numbers::pi / 1.2;
+  const double k = waves::wavenumber(omega, 0.5, 9.81);
+  ASSERT_EQ(w.signal.parts.size(), 1u);
+  EXPECT_NEAR(w.signal.parts[0].amplitude, 0.015 / waves::height_over_stroke(k, 0.5, 0.4), 1e-15);
+  EXPECT_EQ(prescribed_pose(b, 0).position, b.position);
+  for (double t : {0.4, 1.5, 2.2}) {
+    const ShapePose p = prescribed_pose(b, t);
+    // The flap's centre line, hinge (0.15, 0) to the turned up direction, crosses z = 0.4 at
+    // the hinge's x plus the displacement.
+    const Vec3 up = p.orientation * Vec3::UnitZ();
+    const Vec3 hinge(0.15, 0, 0.0);
+    EXPECT_NEAR((p.position - hinge).cross(up).norm(), 0, 1e-14) << "the hinge stays on it";
+    EXPECT_NEAR(hinge[0] + up[0] / up[2] * 0.4, 0.15 + w.signal.displacement(t), 1e-14);
+    // A corner's velocity, v + omega x r, is the rate of its position.
+    const Vec3 corner(0.05, 0, 0.4);
+    auto at = [&](double time) {
+      const ShapePose q = prescribed_pose(b, time);
+      return Vec3(q.position + q.orientation * corner);
+    };
+    const double h = 1e-6;
+    const Vec3 rate = (at(t + h) - at(t - h)) / (2 * h);
+    const Vec3 velocity = p.velocity + p.angular_velocity.cross(p.orientation * corner);
+    EXPECT_NEAR((velocity - rate).norm(), 0, 1e-7) << "t " << t;
+  }
+}
+
+TEST(PrescribedMotion, PistonWavemakerMovesAlongXWithMadsensSecondHarmonic) {
+  const CaseConfig c = parse_case(
+      paddle_case(0, 0.4, "water_depth: 0.5, height: 0.04, period: 2.0, order: 2"), "t.yaml");
+  const BodyConfig& b = c.bodies[0];
+  const WavemakerConfig& w = b.prescribed.wavemaker;
+  EXPECT_EQ(w.paddle, PaddleKind::kPiston);
+  EXPECT_DOUBLE_EQ(w.signal.ramp_time, 4.0);  // two periods
+  ASSERT_EQ(w.signal.parts.size(), 2u);
+  const double k = waves::wavenumber(std::numbers::pi, 0.5, 9.81);
+  EXPECT_NEAR(w.signal.parts[1].amplitude, waves::madsen_second_harmonic(0.04, k, 0.5), 1e-15);
+  EXPECT_DOUBLE_EQ(w.signal.parts[1].omega, 2 * std::numbers::pi);
+  const ShapePose p = prescribed_pose(b, 5.3);
+  EXPECT_NEAR(p.position[0], 0.15 + w.signal.displacement(5.3), 1e-15);
+  EXPECT_EQ(p.position[2], 0.4);
+  EXPECT_NEAR(p.velocity[0], w.signal.velocity(5.3), 1e-15);
+  EXPECT_EQ(p.angular_velocity, Vec3::Zero());
 }
 
 }  // namespace

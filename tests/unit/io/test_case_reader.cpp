@@ -399,4 +399,23 @@ TEST(CaseReader, FluxProbeOfACaseWithoutBoundaries) {
 }
 
 }  // namespace
+TEST(CaseReader, ReadsDampingZones) {
+  const CaseConfig c = parse_case(kMinimal +
+                                      "damping:\n  - {axis: x, from: 3, to: 4, strength: 8}\n"
+                                      "  - {axis: z, from: 2, to: 1, strength: 2}\n",
+                                  "case.yaml");
+  ASSERT_EQ(c.damping.size(), 2u);
+  const DampingZone& along_x = c.damping[0];
+  EXPECT_EQ(along_x.axis, 0);
+  EXPECT_EQ(along_x.rate_at(2.9), 0);
+  EXPECT_NEAR(along_x.rate_at(3.5), 8 * 0.25, 1e-15);  // the square of the share
+  EXPECT_EQ(along_x.rate_at(4.0), 8);
+  const DampingZone& downward = c.damping[1];
+  EXPECT_EQ(downward.axis, 2);
+  EXPECT_EQ(downward.rate_at(2.5), 0);
+  EXPECT_NEAR(downward.rate_at(1.5), 2 * 0.25, 1e-15);
+  EXPECT_EQ(downward.rate_at(0.5), 2);
+  EXPECT_EQ(downward.key, "damping[1]");
+}
+
 }  // namespace sluice::io

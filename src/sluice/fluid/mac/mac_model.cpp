@@ -68,6 +68,18 @@ MacModel<D>::MacModel(const MacParameters& parameters, const io::CaseConfig& con
     }
   }
   now_.u = make_face_field(grid_);
+  if (!config.damping.empty()) {
+    for (int a = 0; a < D; ++a) {
+      const Lattice<D> faces = grid_.face_lattice(a);
+      damping_rate_[a].assign(faces.size(), 0);
+      for (std::size_t f = 0; f < faces.size(); ++f) {
+        const Vec<D> x = faces.position(faces.coordinates(f));
+        for (const io::DampingZone& z : config.damping) {
+          damping_rate_[a][f] += z.rate_at(x[D == 2 && z.axis == 2 ? 1 : z.axis]);
+        }
+      }
+    }
+  }
   now_.pressure.assign(grid_.cell_count(), 0);
   for (int a = 0; a < D; ++a) valid_[a].assign(now_.u[a].size(), 0);
   surface_.carry_through(solid_.solid_cells());
@@ -137,6 +149,13 @@ void MacModel<D>::add_forces(double dt) {
   for (int a = 0; a < D; ++a) {
     if (gravity_[a] == 0) continue;
     for (Real& v : now_.u[a]) v += dt * gravity_[a];
+  }
+  // The damping zones' relaxation, exact over the step for any rate (before the projection,
+  // which keeps the relaxed field divergence-free).
+  for (int a = 0; a < D; ++a) {
+    for (std::size_t f = 0; f < damping_rate_[a].size(); ++f) {
+      now_.u[a][f] *= std::exp(-damping_rate_[a][f] * dt);
+    }
   }
 }
 

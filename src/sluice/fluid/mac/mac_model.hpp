@@ -110,6 +110,8 @@ class MacModel : public FluidSystem,
   std::vector<Wrench> viscous_loads_;    // the viscous stress's on each body, from the last step
   bool solves_body_velocities_ = false;  // the projection scheme
   std::vector<Vec6> solved_velocities_;  // the bodies', from the last projection (that scheme)
+  // Each face's relaxation rate [1/s] in the case's damping zones (none: empty).
+  FaceField<D> damping_rate_;
   Fields now_;
   FaceMarks<D> valid_;
   Fields last_good_;

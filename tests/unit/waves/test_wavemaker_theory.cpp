@@ -1,0 +1,140 @@
+// Linear wave theory and wavemaker theory (waves/): the dispersion relation, Biésel's transfer
+// functions against their textbook forms and limits, a paddle signal's velocity as the rate of
+// its displacement, and a JONSWAP sea's height, peak and seed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "sluice/waves/jonswap.hpp"
+#include "sluice/waves/linear_waves.hpp"
+#include "sluice/waves/paddle_signal.hpp"
+#include "sluice/waves/paddle_transfer.hpp"
+
+namespace sluice::waves {
+namespace {
+
+constexpr double kG = 9.81;
+
+TEST(LinearWaves, WavenumberSolvesTheDispersionRelationFromShallowToDeepWater) {
+  for (double kh : {0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 20.0}) {
+    const double depth = 0.5, k = kh / depth;
+    const double omega = std::sqrt(kG * k * std::tanh(kh));
+    EXPECT_NEAR(wavenumber(omega, depth, kG), k, 1e-12 * k) << "kh " << kh;
+    EXPECT_NEAR(angular_frequency(k, depth, kG), omega, 1e-12 * omega);
+  }
+  // Deep water: L = g T^2 / (2 pi), 1.5613 m for T = 1 s.
+  EXPECT_NEAR(2 * std::numbers::pi / wavenumber(2 * std::numbers::pi, 100, kG), 1.5613, 1e-4);
+}
+
+TEST(LinearWaves, BreakingHeightIsMichesLimit) {
+  // Deep water: H / L = 0.142; shallow: H / h = 0.142 * 2 pi = 0.89.
+  const double k = 1;
+  EXPECT_NEAR(breaking_height(k, 100) * k / (2 * std::numbers::pi), 0.142, 1e-12);
+  EXPECT_NEAR(breaking_height(0.01, 1.0) / 1.0, 0.142 * 2 * std::numbers::pi, 2e-4);
+}
+
+TEST(PaddleTransfer, PistonAndBedHingedFlapMatchDeanAndDalrymple) {
+  for (double kh : {0.1, 0.5, 1.0, 2.0, 4.0}) {
+    const double h = 0.5, k = kh / h;
+    const double piston = 2 * (std::cosh(2 * kh) - 1) / (std::sinh(2 * kh) + 2 * kh);
+    const double flap = 4 * (std::sinh(kh) / kh) * (kh * std::sinh(kh) - std::cosh(kh) + 1) /
+                        (std::sinh(2 * kh) + 2 * kh);
+    EXPECT_NEAR(height_over_stroke(k, h, kPistonHinge), piston, 1e-12) << "kh " << kh;
+    EXPECT_NEAR(height_over_stroke(k, h, h), flap, 1e-12) << "kh " << kh;
+  }
+  // Shallow water: H/S = kh (piston), kh / 2 (flap); deep water both 2.
+  EXPECT_NEAR(height_over_stroke(0.002, 1, kPistonHinge), 0.002, 1e-8);
+  EXPECT_NEAR(height_over_stroke(0.002, 1, 1), 0.001, 1e-8);
+  EXPECT_NEAR(height_over_stroke(30, 1, kPistonHinge), 2, 1e-9);
+  EXPECT_NEAR(height_over_stroke(30, 1, 1), 2 - 2.0 / 30, 1e-9);
+}
+
+// Biésel's integral by the midpoint rule, for a flap hinged d below the still water line.
+double integrated_height_over_stroke(double k, double h, double d) {
+  const int n = 200000;
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const double z = -h + (i + 0.5) * h / n;
+    const double shape = z >= -d ? 1 + z / d : 0;
+    sum += shape * k * std::cosh(k * (h + z)) * h / n;
+  }
+  return 4 * std::sinh(k * h) / (std::sinh(2 * k * h) + 2 * k * h) * sum;
+}
+
+TEST(PaddleTransfer, FlapsHingedAboveAndBelowTheBedMatchTheIntegral) {
+  const double h = 0.5;
+  for (double kh : {0.5, 1.0, 2.0}) {
+    const double k = kh / h;
+    for (double d : {0.3, 0.5, 0.8}) {
+      EXPECT_NEAR(height_over_stroke(k, h, d), integrated_height_over_stroke(k, h, d), 1e-8)
+          << "kh " << kh << ", hinge " << d << " m down";
+    }
+  }
+}
+
+TEST(PaddleTransfer, MadsensSecondHarmonicCancelsALongWavesBoundHarmonic) {
+  // In shallow water the correction adds to the stroke (3 cosh kh / sinh^3 kh outweighs 2/(H/S)),
+  // and in deep water it is -H^2 / (32 h) (2 / (H/S) = 1, the first term vanishing).
+  EXPECT_GT(madsen_second_harmonic(0.05, 0.4 / 0.5, 0.5), 0);
+  EXPECT_NEAR(madsen_second_harmonic(0.05, 40, 0.5), -0.05 * 0.05 / (32 * 0.5), 1e-12);
+}
+
+TEST(PaddleSignal, VelocityIsTheRateOfTheDisplacementThroughTheRamp) {
+  const std::vector<WaveComponent> sea{{0.03, 4.0, 0.3}, {0.01, 7.0, 2.0}};
+  for (bool second_order : {false, true}) {
+    const PaddleSignal s = paddle_signal(sea, 0.5, kPistonHinge, kG, second_order, 2.0);
+    EXPECT_EQ(s.parts.size(), second_order ? 4u : 2u);
+    EXPECT_EQ(s.displacement(0), 0);
+    EXPECT_EQ(s.velocity(0), 0);
+    for (double t : {0.3, 1.0, 1.99, 2.5, 7.0}) {
+      const double e = 1e-6;
+      const double rate = (s.displacement(t + e) - s.displacement(t - e)) / (2 * e);
+      EXPECT_NEAR(s.velocity(t), rate, 1e-7) << "t " << t;
+    }
+  }
+}
+
+TEST(PaddleSignal, StrokeIsTheHeightOverTheTransferFunction) {
+  const double h = 0.5, k = 1 / h, omega = angular_frequency(k, h, kG), a = 0.02;
+  const PaddleSignal s = paddle_signal({{a, omega, 0}}, h, h, kG, false, 0);
+  ASSERT_EQ(s.parts.size(), 1u);
+  EXPECT_NEAR(2 * s.parts[0].amplitude, 2 * a / height_over_stroke(k, h, h), 1e-15);
+  // The paddle moves forward fastest at t = 0, under the crest.
+  EXPECT_NEAR(s.velocity(0), s.parts[0].amplitude * omega, 1e-15);
+}
+
+TEST(Jonswap, ComponentsHoldTheSignificantHeightPeakAndSeed) {
+  JonswapSea sea;
+  sea.significant_height = 0.1;
+  sea.peak_period = 1.5;
+  sea.min_frequency = 0.3;
+  sea.max_frequency = 2.0;
+  sea.components = 300;
+  const auto waves = jonswap_components(sea);
+  ASSERT_EQ(waves.size(), 300u);
+  double m0 = 0, largest = 0, at_largest = 0;
+  for (const auto& w : waves) {
+    m0 += w.amplitude * w.amplitude / 2;
+    EXPECT_GE(w.phase, 0);
+    EXPECT_LT(w.phase, 2 * std::numbers::pi);
+    if (w.amplitude > largest) {
+      largest = w.amplitude;
+      at_largest = w.omega / (2 * std::numbers::pi);
+    }
+  }
+  EXPECT_NEAR(4 * std::sqrt(m0), 0.1, 1e-12);
+  EXPECT_NEAR(at_largest, 1 / 1.5, (sea.max_frequency - sea.min_frequency) / 300);
+  // The shape peaks at f_p; the peak enhancement multiplies it there by gamma.
+  const double fp = 1 / 1.5;
+  EXPECT_NEAR(jonswap_shape(fp, fp, 3.3) / jonswap_shape(fp, fp, 1.0), 3.3, 1e-12);
+  EXPECT_GT(jonswap_shape(fp, fp, 3.3), jonswap_shape(1.02 * fp, fp, 3.3));
+  EXPECT_GT(jonswap_shape(fp, fp, 3.3), jonswap_shape(0.98 * fp, fp, 3.3));
+  // The same seed draws the same sea; another seed another.
+  EXPECT_EQ(jonswap_components(sea)[17].phase, waves[17].phase);
+  sea.seed = 2;
+  EXPECT_NE(jonswap_components(sea)[17].phase, waves[17].phase);
+}
+
+}  // namespace
+}  // namespace sluice::waves
