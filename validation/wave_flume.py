@@ -102,6 +102,8 @@ def regular_figures(out, name, kh, end):
     k, period, length, height, _ = wave(kh)
     probes = read_columns(result_path(out, name, "probes.csv"))
     t = probes["time [s]"]
+    if t[-1] < end * (1 - 1e-4):
+        return {"target": height, "diverged": t[-1]}  # the run stopped early
     late = t >= end - 5 * period
     omega = 2 * math.pi / period
     z1 = harmonic(t[late], probes["two_wavelengths [m]"][late] - DEPTH, omega)
@@ -161,6 +163,10 @@ def main():
              "wall time |", "|---" * 12 + "|"]
     for paddle, kh, spacing, f, s in regular:
         order = "piston, 2nd order" if paddle == "piston" else "flap, 1st order"
+        if "diverged" in f:
+            lines.append(f"| {order} | {kh:g} | | {spacing:g} m | {f['target']:.4f} | "
+                         f"diverged at t = {f['diverged']:.2f} s | | | | | | |")
+            continue
         lines.append(f"| {order} | {kh:g} | {f['ursell']:.0f} | {spacing:g} m "
                      f"({f['target'] / spacing:.1f} a height) | {f['target']:.4f} | "
                      f"{f['height']:.4f} | {100 * (f['height'] / f['target'] - 1):+.1f} % | "
@@ -178,7 +184,7 @@ def main():
 
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
     for paddle, marker in (("piston", "o"), ("flap", "s")):
-        rows = [(kh, f) for p, kh, _, f, _ in regular if p == paddle]
+        rows = [(kh, f) for p, kh, _, f, _ in regular if p == paddle and "diverged" not in f]
         axes[0].plot([kh for kh, _ in rows], [f["height"] / f["target"] for _, f in rows],
                      marker + "-", label=f"{paddle}: crest to trough")
         axes[0].plot([kh for kh, _ in rows],
