@@ -75,6 +75,8 @@ CHECKS = [
      "`cases/cylinder_channel_2d.yaml`", r"^OpenBoundaries\."),
     ("F8 waves from a piston (Biésel, Madsen) and a damping zone, `mac`",
      "`cases/wave_flume_2d.yaml`", r"^Waves\."),
+    ("F9 an open channel between an inlet and an outlet, `wcsph`",
+     "`cases/open_channel_2d.yaml`", r"^OpenChannel\."),
 ]
 
 BUILDS = ("release", "baseline")

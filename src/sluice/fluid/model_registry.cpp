@@ -41,12 +41,22 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                                    "mpirun, or with -np 1",
                                    config.model_name, entry->one_rank_only));
     }
-    if (!entry->open_boundaries && !config.boundaries.empty()) {
+    if (!config.boundaries.empty()) {
       const io::BoundaryConfig& b = config.boundaries.front();
-      throw InputError(config.file(), b.line, b.key + ".type",
-                       fmt::format("the {} model has no open boundaries yet; the mac model has "
-                                   "inlets and outlets",
-                                   config.model_name));
+      if (!entry->open_boundaries) {
+        std::vector<std::string> with;
+        for (const auto& [name, other] : entries_)
+          if (other.open_boundaries) with.push_back(name);
+        throw InputError(config.file(), b.line, b.key + ".type",
+                         fmt::format("the {} model has no open boundaries yet; {} have inlets "
+                                     "and outlets",
+                                     config.model_name, fmt::join(with, " and ")));
+      }
+      if (services.split()) {
+        throw InputError(config.file(), b.line, b.key + ".type",
+                         "open boundaries run on one rank for now; run without mpirun, or "
+                         "with -np 1");
+      }
     }
     if (!entry->damping_zones && !config.damping.empty()) {
       const io::DampingZone& z = config.damping.front();

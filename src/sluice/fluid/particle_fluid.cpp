@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -110,19 +111,42 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
 
   const Real up_gravity = s.gravity[kUpAxis<D>];  // negative when gravity points down
   const Real too_close2 = 0.81 * dx * dx;         // fluid closer than 0.9 dx to a wall is dropped
+  auto clear_of_solids = [&](const Vec<D>& x) {
+    bool inside_wall = false;
+    wall_grid.for_each_near(sorted_walls, x, too_close2,
+                            [&](std::size_t, const Vec<D>&, Real) { inside_wall = true; });
+    // A body's particles sit dx/2 under its surface; fluid closer than 0.4 dx to the
+    // surface would be closer than 0.9 dx to them.
+    return !inside_wall && !bodies.occupies(to_3d<D>(x), 0.4 * dx);
+  };
+  // Water at x, with hydrostatic pressure below `top`; the model turns it into density.
+  auto add_water = [&](const Vec<D>& x, const Vec<D>& velocity, Real top, ParticleKind kind) {
+    s.particles.add(x, velocity, config.fluid.density, mass, kind);
+    s.particles.pressure.back() = config.fluid.density * up_gravity * (x[kUpAxis<D>] - top);
+  };
+  if (!config.boundaries.empty()) {
+    for (const io::BoundaryConfig& b : config.boundaries) {
+      const bool backwards =
+          b.mean_speed < 0 || std::any_of(b.speed_table.begin(), b.speed_table.end(),
+                                          [](const auto& row) { return row.second < 0; });
+      if (b.kind == io::BoundaryKind::kInlet && backwards) {
+        throw InputError(config.file(), b.line,
+                         b.key + (b.speed_table.empty() ? ".mean_speed" : ".speed_table"),
+                         "a particle model's inlet only takes water in: its speed must not be "
+                         "negative");
+      }
+    }
+    const int layers = std::max(wall_layers(interaction_radius, dx), 1);
+    open_ = ParticleOpenBoundaries<D>(config.boundaries, config.domain, dx, layers,
+                                      config.fluid.density, up_gravity);
+    open_zone_ = s.particles.add_int_field({"open_boundary", "1", true});
+  }
   for (const auto& block : config.fluid.blocks) {
-    const Real top = block.box.max[2];
     const Vec<D> velocity = from_3d<D>(block.velocity);
     for (const Vec<D>& x : sample_box_volume<D>(block.box, dx)) {
-      bool inside_wall = false;
-      wall_grid.for_each_near(sorted_walls, x, too_close2,
-                              [&](std::size_t, const Vec<D>&, Real) { inside_wall = true; });
-      // A body's particles sit dx/2 under its surface; fluid closer than 0.4 dx to the
-      // surface would be closer than 0.9 dx to them.
-      if (inside_wall || bodies.occupies(to_3d<D>(x), 0.4 * dx)) continue;
-      s.particles.add(x, velocity, config.fluid.density, mass, ParticleKind::kFluid);
-      // Hydrostatic pressure below the block's top; the model turns it into density.
-      s.particles.pressure.back() = config.fluid.density * up_gravity * (x[kUpAxis<D>] - top);
+      // An inlet's buffer is filled on the buffer's own lattice below.
+      if (open_.in_inlet_buffer(x) || !clear_of_solids(x)) continue;
+      add_water(x, velocity, block.box.max[2], ParticleKind::kFluid);
     }
   }
   s.fluid_count = s.particles.size();
@@ -130,6 +154,16 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
     throw InputError(config.file(), config.fluid.blocks.front().line, "fluid.blocks",
                      "the fluid blocks yield no fluid particle (too small for the spacing, or "
                      "inside walls)");
+  }
+  if (!open_.empty()) {
+    for (const auto& [b, box] : open_.inlet_buffers()) {
+      for (const Vec<D>& x : sample_box_volume<D>(box, dx)) {
+        if (!clear_of_solids(x)) continue;
+        add_water(x, open_.inflow_velocity(b, x, 0), box.max[2], ParticleKind::kWall);
+        s.particles[open_zone_].back() = static_cast<std::int32_t>(b + 1);
+      }
+    }
+    s.fluid_count -= open_.start(s.particles, open_zone_);
   }
   // With the walls' surfaces alone, the walls were sampled all the same: those points kept the
   // fluid out of the walls and spanned the neighbour grid.
@@ -163,8 +197,10 @@ void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_
   model_stages(before_bodies, after_bodies);
   // The engine's own stage, ahead of the model's later ones: sort the particles by cell so
   // that neighbours sit close in memory.
-  auto neighbours =
-      make_stage<const StepClock>("neighbours", [this](const StepClock&) { sort_by_cell(); });
+  auto neighbours = make_stage<const StepClock>("neighbours", [this](const StepClock& clock) {
+    pass_open_boundaries(clock);
+    sort_by_cell();
+  });
   after_bodies.insert(after_bodies.begin() + start, std::move(neighbours));
 }
 
@@ -322,11 +358,25 @@ void ParticleFluid<D>::sort_by_cell() {
   if (device_) return on_device([&] { device_->sort_by_cell(); });
   keep_out_of_walls();
   if (exchange_) exchange_->exchange(state_.particles);
-  // Split, the sort drops the ghosts of the last step and the particles sent away.
+  // Split, the sort drops the ghosts of the last step and the particles sent away; with open
+  // boundaries, those that left the domain by an outlet.
   const std::size_t before = state_.particles.size();
-  state_.cells.sort(state_.particles.position, order_, exchange_ ? &exchange_->gone() : nullptr);
+  const std::vector<bool>* gone = exchange_                     ? &exchange_->gone()
+                                  : open_gone_.size() == before ? &open_gone_
+                                                                : nullptr;
+  state_.cells.sort(state_.particles.position, order_, gone);
   state_.particles.reorder(order_);
+  open_gone_.clear();
   if (exchange_) exchange_->follow(order_, before);
+}
+
+template <int D>
+void ParticleFluid<D>::pass_open_boundaries(const StepClock& clock) {
+  if (open_.empty()) return;
+  const long gained =
+      open_.advance(state_.particles, open_zone_, clock.time, clock.dt, open_gone_, joined_);
+  state_.fluid_count = static_cast<std::size_t>(static_cast<long>(state_.fluid_count) + gained);
+  if (!joined_.empty()) joined_fluid(joined_);
 }
 
 template <int D>

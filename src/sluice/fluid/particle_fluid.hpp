@@ -20,6 +20,7 @@
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/fluid_system.hpp"
 #include "sluice/fluid/particle_device_run.hpp"
+#include "sluice/fluid/particle_open_boundaries.hpp"
 #include "sluice/fluid/particle_state.hpp"
 #include "sluice/fluid/wall_surfaces.hpp"
 #include "sluice/io/case_config.hpp"
@@ -98,6 +99,7 @@ class ParticleFluid : public FluidSystem,
   double pressure_at(const Vec3& x) const override;
   double water_height_at(const Vec3& gauge) const override;
   double surge_front(int axis) const override;
+  double boundary_flux(std::size_t index) const override;
   std::optional<std::string> check(const StepClock& clock) const override;
   void remember_good(double time) override;
   FluidView last_good_view() const override;
@@ -122,6 +124,20 @@ class ParticleFluid : public FluidSystem,
   virtual void gather_model(StateArchive& a, bool first);
   // After end_gathering reordered the particles: rebuilds what indexes them.
   virtual void redistributed() {}
+  // The particles that became fluid at an open boundary this step (an inlet's buffer particles
+  // that crossed into the domain, an outlet's that turned back), before the neighbour sort: a
+  // model whose fluid particles carry state of their own beyond the engine's fields (half-step
+  // values) sets it up from their velocity, density and pressure.
+  virtual void joined_fluid(const std::vector<std::uint32_t>& /*particles*/) {}
+  // The case's open boundaries (empty without), and their buffer particles' field.
+  const ParticleOpenBoundaries<D>& open_boundaries() const { return open_; }
+  // After the model's boundary state (its walls' pressure): the pressure and density, as the
+  // model's equation of state gives it by density_of(p), of each outlet buffer particle whose
+  // outlet prescribes one.
+  template <class DensityOf>
+  void prescribe_outlet_pressure(DensityOf&& density_of) {
+    if (!open_.empty()) open_.prescribe_outlet_pressure(state_.particles, open_zone_, density_of);
+  }
   // The model's stages around the neighbour sort.
   virtual void model_stages(StageList& before_neighbours, StageList& after_neighbours) = 0;
   // The fluid's force on every body particle (kind kBody), indexed by its body point, from the
@@ -207,6 +223,10 @@ class ParticleFluid : public FluidSystem,
   // does not always hold. Deeper than the layers it is left alone (a wall is a plane without
   // end here, so a particle beyond its far side is not in it).
   void keep_out_of_walls();
+  // The neighbours stage's first part with open boundaries: the buffers' particles moved on and
+  // handed over (particle_open_boundaries.hpp); those that left the domain are dropped by the
+  // sort after it.
+  void pass_open_boundaries(const StepClock& clock);
 
   Real radius_;
   WallSurfaces wall_surfaces_;
@@ -215,6 +235,12 @@ class ParticleFluid : public FluidSystem,
   std::size_t body_count_ = 0;
   std::vector<std::uint32_t> order_;  // scratch of the neighbour sort
   std::optional<FieldHandle<Vec<D>>> carried_velocity_;
+  // With open boundaries: the buffers, each particle's (its `open_boundary` field), and the last
+  // pass's particles to drop and particles that became fluid.
+  ParticleOpenBoundaries<D> open_;
+  FieldHandle<std::int32_t> open_zone_;
+  std::vector<bool> open_gone_;
+  std::vector<std::uint32_t> joined_;
   ParticleSet<D> last_good_;
   double last_good_time_ = 0;
   // With run_on_device: the device, and whether the host's set holds its state; with

@@ -31,6 +31,13 @@ double ParticleFluid<D>::pressure_at(const Vec3& point) const {
   return sums[0] > 0 ? sums[1] / sums[0] : 0;
 }
 
+template <int D>
+double ParticleFluid<D>::boundary_flux(std::size_t index) const {
+  if (open_.empty()) return FluidObservation::boundary_flux(index);
+  refresh_host();
+  return open_.outflow(state_.particles, open_zone_, index);
+}
+
 // Height above the domain floor of the highest point of the gauge line where the fluid's
 // kernel-summed volume fraction is at least one half (isolated drops do not count).
 template <int D>
@@ -79,8 +86,10 @@ double ParticleFluid<D>::surge_front(int axis3) const {
 template double ParticleFluid<2>::pressure_at(const Vec3&) const;
 template double ParticleFluid<2>::water_height_at(const Vec3&) const;
 template double ParticleFluid<2>::surge_front(int) const;
+template double ParticleFluid<2>::boundary_flux(std::size_t) const;
 template double ParticleFluid<3>::pressure_at(const Vec3&) const;
 template double ParticleFluid<3>::water_height_at(const Vec3&) const;
 template double ParticleFluid<3>::surge_front(int) const;
+template double ParticleFluid<3>::boundary_flux(std::size_t) const;
 
 }  // namespace sluice

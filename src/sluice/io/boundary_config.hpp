@@ -27,12 +27,20 @@ struct BoundaryConfig {
   // The water's surface height at the side (a free-surface channel): water enters below it,
   // and an outlet's pressure is hydrostatic below it. Unset: the side's whole span.
   std::optional<double> depth;
-  double pressure = 0;  // outlet: at the side (above `depth`), [Pa]
-  std::string key;      // "boundaries[N]", for messages
+  // Outlet: the pressure at the side (above `depth`) [Pa]. Unset: the grid model takes 0; a
+  // particle model prescribes none where `depth` is unset too (the fluid's own pressure).
+  std::optional<double> pressure;
+  std::string key;  // "boundaries[N]", for messages
   int line = 0;
 
   // The inlet's mean speed at `time`.
   double speed_at(double time) const;
+  // The inflow's profile at share `s` (0 to 1) of the span along one axis across the side, of
+  // mean 1: 1, or the parabola 6 s (1 - s).
+  double profile_across(double s) const {
+    if (profile == InletProfile::kUniform) return 1;
+    return s > 0 && s < 1 ? 6 * s * (1 - s) : 0;
+  }
   // "x-", "z+", ...
   std::string side_name() const { return std::string(1, "xyz"[axis]) + (upper ? "+" : "-"); }
 };

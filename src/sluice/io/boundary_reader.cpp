@@ -100,8 +100,10 @@ BoundaryConfig read_boundary(MapReader& map, std::size_t index, const AxisBox& d
       b.speed_table = read_speed_table(path, map, "speed_table");
     }
   } else {
-    b.pressure = map.optional<double>("pressure", 0.0);
-    if (!std::isfinite(b.pressure)) map.fail("pressure", "must be a finite number");
+    if (map.has("pressure")) {
+      b.pressure = map.required<double>("pressure");
+      if (!std::isfinite(*b.pressure)) map.fail("pressure", "must be a finite number");
+    }
   }
   map.finish();
   return b;

@@ -66,8 +66,7 @@ Real OpenBoundaries<D>::profile_at(const io::BoundaryConfig& side, const Vec<D>&
     const Real lo = grid_.origin[b];
     Real hi = lo + grid_.cells[b] * grid_.h;
     if (b == D - 1) hi = std::min(hi, surface);
-    const Real s = (x[b] - lo) / (hi - lo);
-    value *= std::max(Real(0), 6 * s * (1 - s));
+    value *= side.profile_across((x[b] - lo) / (hi - lo));
   }
   return value;
 }
@@ -96,7 +95,7 @@ void OpenBoundaries<D>::apply(SolidFaces<D>& faces, double time) const {
         faces.velocity[a][f] = 0;
         if (!faces.body[a].empty()) faces.body[a][f] = -1;
         const Real head = std::isfinite(surface) ? std::max(Real(0), surface - x[D - 1]) : 0;
-        faces.outlet_pressure[a][f] = side.pressure + density_ * gravity_ * head;
+        faces.outlet_pressure[a][f] = side.pressure.value_or(0) + density_ * gravity_ * head;
       }
     }
   }

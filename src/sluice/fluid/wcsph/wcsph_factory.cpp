@@ -12,6 +12,10 @@ namespace {
 template <int D, class Kernel>
 std::unique_ptr<FluidSystem> build(const WcsphParameters& p, const io::CaseConfig& config,
                                    const BodyGeometry& bodies, const ModelServices& services) {
+  if (!config.boundaries.empty() && p.device != WcsphDevice::kCpu) {
+    throw InputError(config.file(), config.model_line, "model.device",
+                     "open boundaries run on the CPU for now (device: cpu)");
+  }
   auto model = std::make_unique<WcsphModel<D, Kernel>>(p, config, bodies);
   if (services.split()) {
     if (p.device != WcsphDevice::kCpu) {
@@ -50,6 +54,7 @@ ModelEntry wcsph_entry() {
   entry.size.device_bytes_per_element = wcsph_device_bytes_per_particle;
   entry.devices = {"cpu", "gpu", "emulated"};
   entry.one_rank_only.clear();
+  entry.open_boundaries = true;
   return entry;
 }
 

@@ -140,6 +140,18 @@ class WcsphModel final : public ParticleFluid<D> {
   }
 
  protected:
+  // An open boundary's particles that became fluid start their step from where they stand:
+  // half-step values as the present ones, no rates yet.
+  void joined_fluid(const std::vector<std::uint32_t>& particles) override {
+    auto& ps = this->state().particles;
+    for (const std::uint32_t i : particles) {
+      ps[fields_.half_velocity][i] = ps.velocity[i];
+      ps[fields_.half_density][i] = ps.density[i];
+      ps[fields_.acceleration][i] = Vec<D>::Zero();
+      ps[fields_.density_rate][i] = 0;
+    }
+  }
+
   // The fluid's force on each body particle w: minus the force that w exerts on its fluid
   // neighbours i, from the very pair term that gives the fluid's acceleration (in double).
   void body_point_forces(const std::vector<BodyKinematics>&,
@@ -228,6 +240,7 @@ class WcsphModel final : public ParticleFluid<D> {
     pack(s, false);
     WcsphBoundaryContext<D, Kernel> context = neighbourhood(s);
     boundary_->update(context);
+    this->prescribe_outlet_pressure([&](Real p) { return eos_.density(p); });
   }
 
   // Continuity with density diffusion and the momentum equation, gathered per fluid particle
