@@ -12,7 +12,6 @@ Each run's loads.csv and probes.csv are kept in validation/results/.
 
 usage: /usr/bin/python3 validation/cylinder_channel.py [--no-run] [--runs 2d1@0.01,...]
 """
-import csv
 import os
 
 import matplotlib
@@ -20,8 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-from runs import (keep_results, model_runs_parser, open_text, result_path, result_statistics,
-                  run_model, save_figure, write_table)
+from runs import (keep_results, model_runs_parser, read_columns, result_path,
+                  result_statistics, run_model, save_figure, write_table)
 
 CASE = "cylinder_channel_2d"
 DIAMETER = 0.1
@@ -33,13 +32,6 @@ BENCHMARKS = {
     "2d1": (0.2, 4.0, 0.5, []),
     "2d2": (1.0, 8.0, 3.0, ["boundaries.0.mean_speed=1", "probe_interval=0.005"]),
 }
-
-
-def read_columns(path):
-    """A CSV's columns by header name, as numpy arrays."""
-    with open_text(path) as f:
-        rows = list(csv.reader(f))
-    return {name: np.array([float(r[k]) for r in rows[1:]]) for k, name in enumerate(rows[0])}
 
 
 def figures(benchmark, out, name):

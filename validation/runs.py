@@ -3,6 +3,7 @@ that runs one case (--out, --no-run, --sluice), running that case (once, or with
 spacing, resumable), reading one body's CSV from its output, saving a figure to docs/img/ and
 writing a table into a page of docs/."""
 import argparse
+import csv
 import glob
 import gzip
 import json
@@ -151,6 +152,13 @@ def result_statistics(out, name):
 def open_text(path):
     """A text file for reading, gzipped or not (by its name)."""
     return gzip.open(path, "rt") if path.endswith(".gz") else open(path)
+
+
+def read_columns(path):
+    """A CSV's columns (gzipped or not) by header name, as numpy arrays."""
+    with open_text(path) as f:
+        rows = list(csv.reader(f))
+    return {name: np.array([float(r[k]) for r in rows[1:]]) for k, name in enumerate(rows[0])}
 
 
 def require(path):

@@ -14,7 +14,6 @@ docs/img/f8_waves.png. Each run's probes.csv is kept in validation/results/.
 
 usage: /usr/bin/python3 validation/wave_flume.py [--no-run] [--runs piston@1@0.02,...]
 """
-import csv
 import math
 import os
 
@@ -23,8 +22,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-from runs import (keep_results, model_runs_parser, open_text, result_path, result_statistics,
-                  run_model, save_figure, write_table)
+from runs import (keep_results, model_runs_parser, read_columns, result_path,
+                  result_statistics, run_model, save_figure, write_table)
 
 CASE = "wave_flume_2d"
 G, DEPTH, FACE, STEEPNESS = 9.81, 0.5, 0.2, 0.02
@@ -74,13 +73,6 @@ def jonswap_settings(spacing):
             f"peak_period: {tp}, components: {JONSWAP['components']}}}",
             "probes.0.point=[3.0, 0]", f"output_interval={end / 4:.4f}"]
     return sets, end, repeat
-
-
-def read_columns(path):
-    """A CSV's columns by header name, as numpy arrays."""
-    with open_text(path) as f:
-        rows = list(csv.reader(f))
-    return {name: np.array([float(r[j]) for r in rows[1:]]) for j, name in enumerate(rows[0])}
 
 
 def harmonic(t, e, omega):
