@@ -129,8 +129,6 @@ class ParticleFluid : public FluidSystem,
   // model whose fluid particles carry state of their own beyond the engine's fields (half-step
   // values) sets it up from their velocity, density and pressure.
   virtual void joined_fluid(const std::vector<std::uint32_t>& /*particles*/) {}
-  // The case's open boundaries (empty without), and their buffer particles' field.
-  const ParticleOpenBoundaries<D>& open_boundaries() const { return open_; }
   // After the model's boundary state (its walls' pressure): the pressure and density, as the
   // model's equation of state gives it by density_of(p), of each outlet buffer particle whose
   // outlet prescribes one.
