@@ -26,6 +26,16 @@ std::vector<std::string> ModelRegistry::names_on(const std::string& device) cons
   return out;
 }
 
+std::string ModelRegistry::names_with(bool ModelEntry::*feature) const {
+  std::vector<std::string> names;
+  for (const auto& [name, entry] : entries_)
+    if (entry.*feature) names.push_back(name);
+  std::string out;  // "mac, mps and wcsph"
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return out;
+}
+
 const ModelEntry* ModelRegistry::find(const std::string& name) const {
   const auto found = entries_.find(name);
   return found != entries_.end() ? &found->second : nullptr;
@@ -44,13 +54,10 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
     if (!config.boundaries.empty()) {
       const io::BoundaryConfig& b = config.boundaries.front();
       if (!entry->open_boundaries) {
-        std::vector<std::string> with;
-        for (const auto& [name, other] : entries_)
-          if (other.open_boundaries) with.push_back(name);
         throw InputError(config.file(), b.line, b.key + ".type",
                          fmt::format("the {} model has no open boundaries yet; {} have inlets "
                                      "and outlets",
-                                     config.model_name, fmt::join(with, " and ")));
+                                     config.model_name, names_with(&ModelEntry::open_boundaries)));
       }
       if (services.split()) {
         throw InputError(config.file(), b.line, b.key + ".type",
@@ -61,8 +68,8 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
     if (!entry->damping_zones && !config.damping.empty()) {
       const io::DampingZone& z = config.damping.front();
       throw InputError(config.file(), z.line, z.key,
-                       fmt::format("the {} model has no damping zones yet; the mac model has them",
-                                   config.model_name));
+                       fmt::format("the {} model has no damping zones yet; {} have them",
+                                   config.model_name, names_with(&ModelEntry::damping_zones)));
     }
     return entry->make(config, bodies, services);
   }

@@ -37,6 +37,10 @@ class ModelRegistry {
   std::string coupling_scheme(const io::CaseConfig& config) const;
 
  private:
+  // The names of the models that have `feature` (ModelEntry::open_boundaries ...), in
+  // alphabetical order as a phrase: "mac, mps and wcsph".
+  std::string names_with(bool ModelEntry::*feature) const;
+
   std::map<std::string, ModelEntry> entries_;
 };
 

@@ -54,6 +54,13 @@ int longest_horizontal_axis(const AxisBox& domain, int dimension) {
 
 }  // namespace
 
+void refuse_device_with_open_water(const io::CaseConfig& config, bool on_device) {
+  if (on_device && (!config.boundaries.empty() || !config.damping.empty())) {
+    throw InputError(config.file(), config.model_line, "model.device",
+                     "open boundaries and damping zones run on the CPU for now (device: cpu)");
+  }
+}
+
 template <int D>
 ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_radius,
                                 const BodyGeometry& bodies, Walls wall_kind)
@@ -65,6 +72,7 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
                                             wall_layers(interaction_radius, config.spacing), 1))
                                       : bodies.surface_points()),
       body_count_(bodies.body_count()),
+      damping_(config.damping),
       rcb_(config.ranks.partition == "rcb") {
   if (rcb_ && !rcb_offered()) {
     const auto& [file, line] = config.ranks.partition_place;
@@ -202,6 +210,23 @@ void ParticleFluid<D>::append_stages(StageList& before_bodies, StageList& after_
     sort_by_cell();
   });
   after_bodies.insert(after_bodies.begin() + start, std::move(neighbours));
+  if (!damping_.empty()) {
+    after_bodies.push_back(
+        make_stage<const StepClock>("damping", [this](const StepClock& clock) { damp(clock.dt); }));
+  }
+}
+
+template <int D>
+void ParticleFluid<D>::damp(Real dt) {
+  if (device_) throw std::logic_error("damp: the particles live on a device");
+  auto& ps = state_.particles;
+  exec::Default::for_each(ps.size(), [&](std::size_t i) {
+    if (!ps.is_fluid(i)) return;
+    double rate = 0;
+    for (const io::DampingZone& zone : damping_)
+      rate += zone.rate_at(ps.position[i][D == 2 && zone.axis == 2 ? 1 : zone.axis]);
+    if (rate > 0) ps.velocity[i] *= std::exp(-rate * dt);
+  });
 }
 
 template <int D>
@@ -373,10 +398,10 @@ void ParticleFluid<D>::sort_by_cell() {
 template <int D>
 void ParticleFluid<D>::pass_open_boundaries(const StepClock& clock) {
   if (open_.empty()) return;
-  const long gained =
-      open_.advance(state_.particles, open_zone_, clock.time, clock.dt, open_gone_, joined_);
-  state_.fluid_count = static_cast<std::size_t>(static_cast<long>(state_.fluid_count) + gained);
-  if (!joined_.empty()) joined_fluid(joined_);
+  open_.advance(state_.particles, open_zone_, clock.time, clock.dt, open_gone_, hand_over_);
+  state_.fluid_count += hand_over_.joined.size();
+  state_.fluid_count -= hand_over_.left.size();
+  handed_over(hand_over_);
 }
 
 template <int D>

@@ -34,6 +34,11 @@ inline int wall_layers(Real interaction_radius, Real dx) {
   return static_cast<int>(std::ceil(interaction_radius / dx - 1e-9));
 }
 
+// The case's open boundaries and damping zones run on the CPU for now: a particle model whose
+// loops are to run on a device (`on_device`) refuses a case with either (InputError at
+// model.device).
+void refuse_device_with_open_water(const io::CaseConfig& config, bool on_device);
+
 template <int D>
 class ParticleFluid : public FluidSystem,
                       public FluidExchange,
@@ -124,17 +129,17 @@ class ParticleFluid : public FluidSystem,
   virtual void gather_model(StateArchive& a, bool first);
   // After end_gathering reordered the particles: rebuilds what indexes them.
   virtual void redistributed() {}
-  // The particles that became fluid at an open boundary this step (an inlet's buffer particles
-  // that crossed into the domain, an outlet's that turned back), before the neighbour sort: a
-  // model whose fluid particles carry state of their own beyond the engine's fields (half-step
-  // values) sets it up from their velocity, density and pressure.
-  virtual void joined_fluid(const std::vector<std::uint32_t>& /*particles*/) {}
+  // Who changed sides at the open boundaries this step (particle_open_boundaries.hpp), before
+  // the neighbour sort: a model whose particles carry state of their own beyond the engine's
+  // fields (half-step values, roles) sets it up for them.
+  virtual void handed_over(const BufferHandOver& /*hand_over*/) {}
   // After the model's boundary state (its walls' pressure): the pressure and density, as the
   // model's equation of state gives it by density_of(p), of each outlet buffer particle whose
-  // outlet prescribes one.
+  // outlet prescribes one (ParticleOpenBoundaries::prescribe_outlet_pressure).
   template <class DensityOf>
-  void prescribe_outlet_pressure(DensityOf&& density_of) {
-    if (!open_.empty()) open_.prescribe_outlet_pressure(state_.particles, open_zone_, density_of);
+  void prescribe_outlet_pressure(DensityOf&& density_of, Real surface_shift = 0) {
+    if (!open_.empty())
+      open_.prescribe_outlet_pressure(state_.particles, open_zone_, density_of, surface_shift);
   }
   // The model's stages around the neighbour sort.
   virtual void model_stages(StageList& before_neighbours, StageList& after_neighbours) = 0;
@@ -225,6 +230,9 @@ class ParticleFluid : public FluidSystem,
   // handed over (particle_open_boundaries.hpp); those that left the domain are dropped by the
   // sort after it.
   void pass_open_boundaries(const StepClock& clock);
+  // The damping zones' stage, after the model's last: each fluid particle's velocity times
+  // exp(-rate dt), the rates of the zones it lies in added up.
+  void damp(Real dt);
 
   Real radius_;
   WallSurfaces wall_surfaces_;
@@ -234,11 +242,12 @@ class ParticleFluid : public FluidSystem,
   std::vector<std::uint32_t> order_;  // scratch of the neighbour sort
   std::optional<FieldHandle<Vec<D>>> carried_velocity_;
   // With open boundaries: the buffers, each particle's (its `open_boundary` field), and the last
-  // pass's particles to drop and particles that became fluid.
+  // pass's particles to drop and who changed sides.
+  std::vector<io::DampingZone> damping_;
   ParticleOpenBoundaries<D> open_;
   FieldHandle<std::int32_t> open_zone_;
   std::vector<bool> open_gone_;
-  std::vector<std::uint32_t> joined_;
+  BufferHandOver hand_over_;
   ParticleSet<D> last_good_;
   double last_good_time_ = 0;
   // With run_on_device: the device, and whether the host's set holds its state; with

@@ -89,13 +89,13 @@ std::size_t ParticleOpenBoundaries<D>::start(ParticleSet<D>& ps,
 }
 
 template <int D>
-long ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone,
+void ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone,
                                         double time, Real dt, std::vector<bool>& gone,
-                                        std::vector<std::uint32_t>& joined) const {
+                                        BufferHandOver& hand_over) const {
   const std::size_t before = ps.size();
   gone.assign(before, false);
-  joined.clear();
-  long left = 0;
+  hand_over.joined.clear();
+  hand_over.left.clear();
   std::vector<unsigned char> copy;
   for (std::size_t i = 0; i < before; ++i) {
     const std::int32_t z = ps[zone][i];
@@ -107,7 +107,7 @@ long ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int
         if (side.kind == io::BoundaryKind::kOutlet && beyond_inner_face(side, ps.position[i]) > 0) {
           ps.kind[i] = ParticleKind::kWall;
           ps[zone][i] = static_cast<std::int32_t>(b + 1);
-          ++left;
+          hand_over.left.push_back(static_cast<std::uint32_t>(i));
           break;
         }
       }
@@ -135,16 +135,16 @@ long ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int
     }
     ps.kind[i] = ParticleKind::kFluid;
     ps[zone][i] = 0;
-    joined.push_back(static_cast<std::uint32_t>(i));
+    hand_over.joined.push_back(static_cast<std::uint32_t>(i));
   }
   gone.resize(ps.size(), false);
-  return static_cast<long>(joined.size()) - left;
 }
 
 template <int D>
-Real ParticleOpenBoundaries<D>::outlet_pressure(const io::BoundaryConfig& side,
-                                                const Vec<D>& x) const {
-  const Real head = side.depth ? std::max(Real(0), surface_of(side) - x[D - 1]) : Real(0);
+Real ParticleOpenBoundaries<D>::outlet_pressure(const io::BoundaryConfig& side, const Vec<D>& x,
+                                                Real surface_shift) const {
+  const Real head =
+      side.depth ? std::max(Real(0), surface_of(side) + surface_shift - x[D - 1]) : Real(0);
   return side.pressure.value_or(0) - density_ * up_gravity_ * head;
 }
 

@@ -23,6 +23,13 @@
 
 namespace sluice {
 
+// What a pass handed over between the fluid and the buffers (indices into the particle set
+// before the neighbour sort): the particles that became fluid (an inlet's that crossed into the
+// domain, an outlet's that turned back), and the fluid that entered an outlet's buffer.
+struct BufferHandOver {
+  std::vector<std::uint32_t> joined, left;
+};
+
 template <int D>
 class ParticleOpenBoundaries {
  public:
@@ -48,21 +55,24 @@ class ParticleOpenBoundaries {
   // After the drift of a step of `dt` from `time`: moves the buffers' particles on, hands the
   // particles across the buffers' inner faces over (fluid <-> buffer), fills the inlets' buffers
   // behind those that left them, and marks in `gone` (sized to the set) the outlets' particles
-  // that left the domain; `joined` lists the particles that became fluid (whose model state
-  // the model sets up). Returns the fluid particles gained less those lost.
-  long advance(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone, double time, Real dt,
-               std::vector<bool>& gone, std::vector<std::uint32_t>& joined) const;
+  // that left the domain; `hand_over` lists who changed sides (the model sets up its own state
+  // of them).
+  void advance(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone, double time, Real dt,
+               std::vector<bool>& gone, BufferHandOver& hand_over) const;
   // After the model's boundary state: each outlet buffer particle's pressure, where the outlet
-  // prescribes it, and the density `density_of(p)` of the model's equation of state.
+  // prescribes it, and the density `density_of(p)` of the model's equation of state. A model
+  // whose free surface holds its pressure at the surface particles' centres (MPS) measures the
+  // outlet's hydrostatic head from `surface_shift` (-dx/2) below its depth, where its own water's
+  // pressure vanishes.
   template <class DensityOf>
   void prescribe_outlet_pressure(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone,
-                                 DensityOf&& density_of) const {
+                                 DensityOf&& density_of, Real surface_shift = 0) const {
     const auto& in = ps[zone];
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (in[i] == 0) continue;
       const io::BoundaryConfig& side = sides_[static_cast<std::size_t>(in[i] - 1)];
       if (side.kind != io::BoundaryKind::kOutlet || !prescribes_pressure(side)) continue;
-      ps.pressure[i] = outlet_pressure(side, ps.position[i]);
+      ps.pressure[i] = outlet_pressure(side, ps.position[i], surface_shift);
       ps.density[i] = density_of(ps.pressure[i]);
     }
   }
@@ -90,8 +100,9 @@ class ParticleOpenBoundaries {
   bool prescribes_pressure(const io::BoundaryConfig& side) const {
     return side.pressure.has_value() || side.depth.has_value();
   }
-  // The outlet's pressure at x: its pressure, and hydrostatic below its depth.
-  Real outlet_pressure(const io::BoundaryConfig& side, const Vec<D>& x) const;
+  // The outlet's pressure at x: its pressure, and hydrostatic below its depth (shifted by
+  // `surface_shift`).
+  Real outlet_pressure(const io::BoundaryConfig& side, const Vec<D>& x, Real surface_shift) const;
 
   std::vector<io::BoundaryConfig> sides_;
   AxisBox domain_;

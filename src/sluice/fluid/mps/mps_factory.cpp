@@ -32,6 +32,7 @@ std::unique_ptr<FluidSystem> make_mps(const io::CaseConfig& config, const BodyGe
                                    parameters.solver, fmt::join(split, ", ")));
     }
   }
+  refuse_device_with_open_water(config, parameters.emulated_device);
   auto model = std::make_unique<MpsModel<D>>(parameters, config, bodies, ranks);
   // Split before the first neighbour list, which each rank then builds over its own particles
   // and its ghosts: two neighbour radii of them (a ghost's number density, its surface and its
@@ -52,6 +53,8 @@ ModelEntry mps_entry() {
   entry.size.device_bytes_per_element = [](int dimension) { return dimension == 2 ? 544 : 728; };
   entry.devices = {"cpu", "emulated"};
   entry.one_rank_only.clear();
+  entry.open_boundaries = true;
+  entry.damping_zones = true;
   return entry;
 }
 

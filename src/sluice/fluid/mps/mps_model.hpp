@@ -161,6 +161,14 @@ class MpsModel final : public ParticleFluid<D> {
   // The next step's prediction reads the last step's list: the same neighbours, drawn here from
   // where the particles stand (a checkpoint on as many ranks keeps the list itself).
   void redistributed() override { build_neighbours(); }
+  // At the open boundaries: a buffer particle that became fluid takes the fluid's role, fluid
+  // that entered an outlet's buffer a boundary particle's (its pressure then extrapolated, or
+  // prescribed where the outlet gives one).
+  void handed_over(const BufferHandOver& hand_over) override {
+    auto& role = this->state().particles[role_];
+    for (const std::uint32_t i : hand_over.joined) role[i] = kMpsFluid;
+    for (const std::uint32_t i : hand_over.left) role[i] = kMpsBoundary;
+  }
 
   void model_stages(StageList& before, StageList& after) override {
     before.push_back(
@@ -372,6 +380,9 @@ class MpsModel final : public ParticleFluid<D> {
     } else {
       solved = equation_.solve(this->state().particles.pressure);
       this->refresh_ghosts(this->state().particles.pressure);  // split: the owners solved them
+      // Its free surface's pressure vanishes at the surface particles' centres, dx/2 below
+      // the water's surface: so does an outlet's hydrostatic pressure.
+      this->prescribe_outlet_pressure([&](Real) { return density_; }, -0.5 * this->state().spacing);
     }
     const PressureEquationReport& r = last_solve();
     ++solves_;

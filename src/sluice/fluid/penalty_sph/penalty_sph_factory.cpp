@@ -14,6 +14,7 @@ std::unique_ptr<FluidSystem> make_penalty_sph(const io::CaseConfig& config,
                                               const BodyGeometry& bodies,
                                               const ModelServices& services) {
   const PenaltySphParameters p = read_penalty_sph_parameters(config);
+  refuse_device_with_open_water(config, p.emulated_device);
   auto model = std::make_unique<PenaltySphModel<D>>(p, config, bodies);
   if (services.split()) {
     if (p.emulated_device) {
@@ -41,6 +42,7 @@ ModelEntry penalty_sph_entry() {
   entry.schemes = {"spring-exchanges"};
   entry.devices = {"cpu", "emulated"};
   entry.one_rank_only.clear();
+  entry.damping_zones = true;
   return entry;
 }
 

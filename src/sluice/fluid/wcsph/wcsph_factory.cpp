@@ -12,10 +12,7 @@ namespace {
 template <int D, class Kernel>
 std::unique_ptr<FluidSystem> build(const WcsphParameters& p, const io::CaseConfig& config,
                                    const BodyGeometry& bodies, const ModelServices& services) {
-  if (!config.boundaries.empty() && p.device != WcsphDevice::kCpu) {
-    throw InputError(config.file(), config.model_line, "model.device",
-                     "open boundaries run on the CPU for now (device: cpu)");
-  }
+  refuse_device_with_open_water(config, p.device != WcsphDevice::kCpu);
   auto model = std::make_unique<WcsphModel<D, Kernel>>(p, config, bodies);
   if (services.split()) {
     if (p.device != WcsphDevice::kCpu) {
@@ -55,6 +52,7 @@ ModelEntry wcsph_entry() {
   entry.devices = {"cpu", "gpu", "emulated"};
   entry.one_rank_only.clear();
   entry.open_boundaries = true;
+  entry.damping_zones = true;
   return entry;
 }
 

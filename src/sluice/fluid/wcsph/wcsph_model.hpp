@@ -142,9 +142,9 @@ class WcsphModel final : public ParticleFluid<D> {
  protected:
   // An open boundary's particles that became fluid start their step from where they stand:
   // half-step values as the present ones, no rates yet.
-  void joined_fluid(const std::vector<std::uint32_t>& particles) override {
+  void handed_over(const BufferHandOver& hand_over) override {
     auto& ps = this->state().particles;
-    for (const std::uint32_t i : particles) {
+    for (const std::uint32_t i : hand_over.joined) {
       ps[fields_.half_velocity][i] = ps.velocity[i];
       ps[fields_.half_density][i] = ps.density[i];
       ps[fields_.acceleration][i] = Vec<D>::Zero();
