@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""F8: waves from a paddle against linear wavemaker theory, with the grid model (mac).
+"""F8: waves from a paddle against linear wavemaker theory, with the grid model (mac) and wcsph.
 
 Runs cases/wave_flume_2d.yaml (water 0.5 m deep) re-laid for each wave: regular waves of
 steepness H/L = 0.02 at kh = 0.5, 1 and 2, from a piston (Biésel's stroke with Madsen's 1971
@@ -12,7 +12,8 @@ components that repeat after 41 s) from the piston, its H_m0 and T_p at a gauge 
 paddle over one whole repeat. Writes docs/validation.md's tables f8-regular and f8-jonswap and
 docs/img/f8_waves.png. Each run's probes.csv is kept in validation/results/.
 
-usage: /usr/bin/python3 validation/wave_flume.py [--no-run] [--runs piston@1@0.02,...]
+usage: /usr/bin/python3 validation/wave_flume.py [--no-run] [--runs piston@1@0.02[@MODEL],...]
+(MODEL: mac unless named; wcsph, mps and penalty-sph take the same paddle and damping zone).
 """
 import math
 import os
@@ -125,41 +126,43 @@ def jonswap_figures(out, name, end, repeat):
 
 def main():
     runs = ("piston@1@0.02,piston@0.5@0.02,piston@2@0.01,flap@1@0.02,jonswap@1@0.02,"
-            "flap@0.5@0.02,flap@2@0.01")
+            "flap@0.5@0.02,flap@2@0.01,piston@1@0.02@wcsph")
     parser = model_runs_parser(CASE, __doc__.split("\n")[0], runs)
     args = parser.parse_args()
     regular, irregular = [], []
     for item in args.runs.split(","):
-        paddle, kh, spacing = item.split("@")
+        paddle, kh, spacing, *rest = item.split("@")
+        model = rest[0] if rest else "mac"
         kh, spacing = float(kh), float(spacing)
-        name = f"f8_{paddle}_kh{kh:g}_{spacing:g}"
+        name = f"f8_{paddle}_kh{kh:g}_{spacing:g}" + ("" if model == "mac" else f"_{model}")
         out = os.path.join(args.out, name)
         if paddle == "jonswap":
             sets, end, repeat = jonswap_settings(spacing)
         else:
             sets, end = regular_settings(paddle, kh, spacing)
         if not args.no_run:
-            run_model(CASE, out, "mac", spacing, end, args, sets)
+            run_model(CASE, out, model, spacing, end, args, sets)
             keep_results(out, name, ("probes.csv",))
         statistics = result_statistics(out, name) or {}
         if paddle == "jonswap":
             irregular.append((spacing, jonswap_figures(out, name, end, repeat), statistics))
         else:
-            regular.append((paddle, kh, spacing, regular_figures(out, name, kh, end), statistics))
+            regular.append((paddle, kh, spacing, model, regular_figures(out, name, kh, end),
+                            statistics))
 
     def wall(s):
         return f"{s['wall']:.0f} s ({s['threads']} threads)" if s else ""
 
-    lines = ["| paddle | kh | Ursell H L²/h³ | cells | target H [m] | crest to trough [m] | "
-             "from target | incident, 1st harmonic [m] | from target | reflection | steps | "
-             "wall time |", "|---" * 12 + "|"]
-    for paddle, kh, spacing, f, s in regular:
+    lines = ["| model | paddle | kh | Ursell H L²/h³ | cells or spacing | target H [m] | "
+             "crest to trough [m] | from target | incident, 1st harmonic [m] | from target | "
+             "reflection | steps | wall time |", "|---" * 13 + "|"]
+    for paddle, kh, spacing, model, f, s in regular:
         order = "piston, 2nd order" if paddle == "piston" else "flap, 1st order"
         if "diverged" in f:
-            lines.append(f"| {order} | {kh:g} | | {spacing:g} m | {f['target']:.4f} | "
+            lines.append(f"| `{model}` | {order} | {kh:g} | | {spacing:g} m | {f['target']:.4f} | "
                          f"diverged at t = {f['diverged']:.2f} s | | | | | | |")
             continue
-        lines.append(f"| {order} | {kh:g} | {f['ursell']:.0f} | {spacing:g} m "
+        lines.append(f"| `{model}` | {order} | {kh:g} | {f['ursell']:.0f} | {spacing:g} m "
                      f"({f['target'] / spacing:.1f} a height) | {f['target']:.4f} | "
                      f"{f['height']:.4f} | {100 * (f['height'] / f['target'] - 1):+.1f} % | "
                      f"{f['first_harmonic']:.4f} | "
@@ -174,22 +177,29 @@ def main():
                      f"| {wall(s)} |")
     write_table("validation.md", "f8-jonswap", "\n".join(lines))
 
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.8))
+    models = sorted({model for _, _, _, model, _, _ in regular})
     for paddle, marker in (("piston", "o"), ("flap", "s")):
-        rows = [(kh, f) for p, kh, _, f, _ in regular if p == paddle and "diverged" not in f]
-        axes[0].plot([kh for kh, _ in rows], [f["height"] / f["target"] for _, f in rows],
-                     marker + "-", label=f"{paddle}: crest to trough")
-        axes[0].plot([kh for kh, _ in rows],
-                     [f["first_harmonic"] / f["target"] for _, f in rows], marker + "--",
-                     label=f"{paddle}: incident 1st harmonic")
-        axes[1].plot([kh for kh, _ in rows], [100 * f["reflection"] for _, f in rows],
-                     marker + "-", label=paddle)
+        for model in models:
+            rows = sorted(((kh, f) for p, kh, _, m, f, _ in regular
+                           if p == paddle and m == model and "diverged" not in f),
+                          key=lambda row: row[0])
+            if not rows:
+                continue
+            label = f"{model} {paddle}"
+            axes[0].plot([kh for kh, _ in rows], [f["height"] / f["target"] for _, f in rows],
+                         marker + "-", label=f"{label}: crest to trough")
+            axes[0].plot([kh for kh, _ in rows],
+                         [f["first_harmonic"] / f["target"] for _, f in rows], marker + "--",
+                         label=f"{label}: incident 1st harmonic")
+            axes[1].plot([kh for kh, _ in rows], [100 * f["reflection"] for _, f in rows],
+                         marker + "-", label=label)
     axes[0].axhspan(0.95, 1.05, color="tab:green", alpha=0.3, label="±5 % of Biésel")
     axes[0].set(xlabel="kh", ylabel="H / Biésel's", title="wave height, 2 L from the paddle")
     axes[1].axhline(10, color="tab:red", ls="--", label="10 % bar")
     axes[1].set(xlabel="kh", ylabel="reflection [%]", title="reflection (Goda & Suzuki)")
-    for ax in axes[:2]:
-        ax.legend(fontsize=8)
+    axes[0].legend(fontsize=7, ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.16))
+    axes[1].legend(fontsize=8)
     for spacing, f, _ in irregular:
         fp = 1 / JONSWAP["peak_period"]
         ff = np.linspace(0.5 * fp, 3 * fp, 400)
