@@ -68,21 +68,25 @@ Vec<D> ParticleOpenBoundaries<D>::inflow_velocity(std::size_t index, const Vec<D
 }
 
 template <int D>
+bool ParticleOpenBoundaries<D>::join_outlet(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone,
+                                            std::size_t i) const {
+  for (std::size_t b = 0; b < sides_.size(); ++b) {
+    const io::BoundaryConfig& side = sides_[b];
+    if (side.kind == io::BoundaryKind::kOutlet && beyond_inner_face(side, ps.position[i]) > 0) {
+      ps.kind[i] = ParticleKind::kWall;
+      ps[zone][i] = static_cast<std::int32_t>(b + 1);
+      return true;
+    }
+  }
+  return false;
+}
+
+template <int D>
 std::size_t ParticleOpenBoundaries<D>::start(ParticleSet<D>& ps,
                                              FieldHandle<std::int32_t> zone) const {
-  auto& in = ps[zone];
   std::size_t joined = 0;
   for (std::size_t i = 0; i < ps.size(); ++i) {
-    if (!ps.is_fluid(i)) continue;
-    for (std::size_t b = 0; b < sides_.size(); ++b) {
-      const io::BoundaryConfig& side = sides_[b];
-      if (side.kind == io::BoundaryKind::kOutlet && beyond_inner_face(side, ps.position[i]) > 0) {
-        ps.kind[i] = ParticleKind::kWall;
-        in[i] = static_cast<std::int32_t>(b + 1);
-        ++joined;
-        break;
-      }
-    }
+    if (ps.is_fluid(i) && join_outlet(ps, zone, i)) ++joined;
   }
   return joined;
 }
@@ -99,17 +103,9 @@ void ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int
   for (std::size_t i = 0; i < before; ++i) {
     const std::int32_t z = ps[zone][i];
     if (z == 0) {
-      if (!ps.is_fluid(i)) continue;
       // Fluid that entered an outlet's buffer joins it, at the velocity it has.
-      for (std::size_t b = 0; b < sides_.size(); ++b) {
-        const io::BoundaryConfig& side = sides_[b];
-        if (side.kind == io::BoundaryKind::kOutlet && beyond_inner_face(side, ps.position[i]) > 0) {
-          ps.kind[i] = ParticleKind::kWall;
-          ps[zone][i] = static_cast<std::int32_t>(b + 1);
-          hand_over.left.push_back(static_cast<std::uint32_t>(i));
-          break;
-        }
-      }
+      if (ps.is_fluid(i) && join_outlet(ps, zone, i))
+        hand_over.left.push_back(static_cast<std::uint32_t>(i));
       continue;
     }
     const std::size_t b = static_cast<std::size_t>(z - 1);

@@ -97,6 +97,8 @@ class ParticleOpenBoundaries {
     return outward(side) * (x[model_axis(side)] - inner_face(side));
   }
   Real surface_of(const io::BoundaryConfig& side) const;
+  // Fluid particle i, where it lies in an outlet's buffer, joins that buffer; whether it did.
+  bool join_outlet(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone, std::size_t i) const;
   bool prescribes_pressure(const io::BoundaryConfig& side) const {
     return side.pressure.has_value() || side.depth.has_value();
   }
