@@ -63,6 +63,9 @@ struct ModelEntry {
   // Whether it takes the case's open boundaries (inlets, outlets); a case with one and a model
   // without is refused.
   bool open_boundaries = false;
+  // Whether it takes a periodic axis (`type: periodic`); a case with one and a model without is
+  // refused.
+  bool periodic = false;
   // Whether it takes the case's damping zones; a case with one and a model without is refused.
   bool damping_zones = false;
 };

@@ -65,6 +65,11 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                          "with -np 1");
       }
     }
+    if (config.periodic && !entry->periodic) {
+      throw InputError(config.file(), config.periodic->line, config.periodic->key + ".type",
+                       fmt::format("the {} model has no periodic boundaries yet; {} have them",
+                                   config.model_name, names_with(&ModelEntry::periodic)));
+    }
     if (!entry->damping_zones && !config.damping.empty()) {
       const io::DampingZone& z = config.damping.front();
       throw InputError(config.file(), z.line, z.key,

@@ -55,9 +55,10 @@ int longest_horizontal_axis(const AxisBox& domain, int dimension) {
 }  // namespace
 
 void refuse_device_with_open_water(const io::CaseConfig& config, bool on_device) {
-  if (on_device && (!config.boundaries.empty() || !config.damping.empty())) {
+  if (on_device && (!config.boundaries.empty() || !config.damping.empty() || config.periodic)) {
     throw InputError(config.file(), config.model_line, "model.device",
-                     "open boundaries and damping zones run on the CPU for now (device: cpu)");
+                     "open and periodic boundaries and damping zones run on the CPU for now "
+                     "(device: cpu)");
   }
 }
 
@@ -100,9 +101,10 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
   const Real mass = config.fluid.density * particle_volume;
 
   // Without fluid, walls are contact bodies only (RigidBodies): no wall particles.
-  const std::vector<Vec<D>> walls =
-      config.has_fluid() ? sample_walls<D>(config, wall_layers(interaction_radius, dx))
-                         : std::vector<Vec<D>>{};
+  std::vector<Vec<D>> walls = config.has_fluid()
+                                  ? sample_walls<D>(config, wall_layers(interaction_radius, dx))
+                                  : std::vector<Vec<D>>{};
+  if (config.periodic) join_periodic_sides(config, walls);
 
   // A grid over the walls and the domain, used first to drop fluid points that fall inside
   // walls, then as the simulation's neighbour grid.
@@ -191,12 +193,42 @@ ParticleFluid<D>::ParticleFluid(const io::CaseConfig& config, Real interaction_r
   }
   s.body_point_acceleration.assign(body_points_.size(), Vec3::Zero());
 
+  if (periodic_) {
+    // The periodic images stand within two supports beyond either side.
+    lo[periodic_->axis] = std::min(lo[periodic_->axis], periodic_->lo - 2 * interaction_radius);
+    hi[periodic_->axis] = std::max(hi[periodic_->axis], periodic_->hi + 2 * interaction_radius);
+  }
   s.cells = CellList<D>(lo, hi, interaction_radius);
   s.cells.sort(s.particles.position, order);
   s.particles.reorder(order);
   // On one rank too, so that a checkpoint has the same fields on any number of ranks (and
   // resumes on another number).
   owned_kind_ = s.particles.add_int_field({"owned_kind", "1", false});
+}
+
+template <int D>
+void ParticleFluid<D>::join_periodic_sides(const io::CaseConfig& config,
+                                           std::vector<Vec<D>>& walls) {
+  const io::PeriodicAxis& p = *config.periodic;
+  const int axis = D == 3 ? p.axis : 0;  // 2D: x alone is periodic
+  const Real lo = config.domain.min[p.axis], hi = config.domain.max[p.axis];
+  const Real cells = (hi - lo) / config.spacing;
+  if (std::abs(cells - std::round(cells)) > 1e-6 * cells) {
+    throw InputError(config.file(), p.line, p.key + ".axis",
+                     fmt::format("the domain's length along {} ({} m) is not a whole number of "
+                                 "spacings ({} m): the lattice must repeat across the sides",
+                                 "xyz"[p.axis], hi - lo, config.spacing));
+  }
+  if (!config.boundaries.empty()) {
+    throw InputError(config.file(), p.line, p.key + ".type",
+                     "a particle model takes a periodic axis or inlets and outlets, not both yet");
+  }
+  periodic_ = PeriodicSpan{axis, lo, hi};
+  periodic_key_ = p.key;
+  periodic_place_ = {config.file(), p.line};
+  // A wall's particles past a side (a plane's, sampled beyond the domain) would stand on top
+  // of the other side's images.
+  std::erase_if(walls, [&](const Vec<D>& x) { return x[axis] < lo || x[axis] >= hi; });
 }
 
 template <int D>
@@ -233,6 +265,13 @@ template <int D>
 void ParticleFluid<D>::distribute(const Communicator& ranks, Real halo_depth) {
   if (device_) throw std::logic_error("distribute: the particles live on a device");
   ranks_ = ranks;
+  if (!ranks.split() && !periodic_) return;
+  if (periodic_ && !(periodic_->length() > 2 * halo_depth)) {
+    throw InputError(periodic_place_.first, periodic_place_.second, periodic_key_ + ".axis",
+                     fmt::format("the domain along a periodic axis ({} m) must be longer than "
+                                 "twice the model's reach across a side ({} m)",
+                                 periodic_->length(), 2 * halo_depth));
+  }
   split_evenly(halo_depth);
 }
 
@@ -260,6 +299,7 @@ void ParticleFluid<D>::split_evenly(Real halo_depth) {
   }
   exchange_ = std::make_unique<ParticleExchange<D>>(ranks_, std::move(regions), halo_depth,
                                                     owned_kind_, balance);
+  if (periodic_) exchange_->join_sides(*periodic_);
   exchange_->start(ps);
   const std::size_t before = ps.size();
   state_.cells.sort(ps.position, order_);
@@ -324,7 +364,7 @@ void ParticleFluid<D>::gather_model(StateArchive&, bool) {
 
 template <int D>
 std::string ParticleFluid<D>::decomposition() const {
-  if (!exchange_) return {};
+  if (!ranks_.split()) return {};
   const Decomposition& regions = exchange_->regions();
   return fmt::format("{} ranks: {}, ghosts within {:.4g} m of a {}", ranks_.size(),
                      regions.describe(), exchange_->depth(), regions.is_slabs() ? "slab" : "box");
@@ -332,7 +372,7 @@ std::string ParticleFluid<D>::decomposition() const {
 
 template <int D>
 std::vector<std::pair<std::string, double>> ParticleFluid<D>::counters() const {
-  if (!exchange_) return {};
+  if (!ranks_.split()) return {};
   const ExchangeTotals& t = exchange_->totals();
   const double exchanges = std::max<double>(t.exchanges, 1);
   return {{"ghosts_per_exchange", ranks_.max(t.ghosts / exchanges)},
@@ -533,7 +573,7 @@ void ParticleFluid<D>::archive_state(StateArchive& a) {
   state_.particles.archive_state(a);
   a(state_.body_point_acceleration);
   state_.cells.archive_state(a);
-  if (exchange_) {
+  if (ranks_.split()) {
     a.section("ranks");
     exchange_->archive_state(a);
   }

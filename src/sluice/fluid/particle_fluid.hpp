@@ -74,12 +74,13 @@ class ParticleFluid : public FluidSystem,
   void run_on_emulated_device();
 
   // From here on the particles are split over `ranks` (called before initialize(), on every
-  // rank, each of which built the whole case): slabs along the domain's longest horizontal
-  // axis, or the boxes of Zoltan's RCB where the case's `ranks.partition` says rcb, with an
-  // equal share of the particles' work each; every rank keeps its own and, as ghosts,
-  // copies of the others' within `halo_depth` of its region, taken anew at each neighbour stage.
-  // Counts, sums, probes, loads and the check are then over the run's ranks; a frame holds
-  // this rank's own particles.
+  // rank, each of which built the whole case; with one rank, nothing happens unless the case
+  // has a periodic axis, whose images are ghosts as another rank's particles are): slabs along the
+  // domain's longest horizontal axis, or the boxes of Zoltan's RCB where the case's
+  // `ranks.partition` says rcb, with an equal share of the particles' work each; every rank keeps
+  // its own and, as ghosts, copies of the others' within `halo_depth` of its region, taken anew at
+  // each neighbour stage. Counts, sums, probes, loads and the check are then over the run's ranks;
+  // a frame holds this rank's own particles.
   void distribute(const Communicator& ranks, Real halo_depth);
   std::string decomposition() const override;
   // Resuming a checkpoint written on another number of ranks (collective): between
@@ -258,6 +259,12 @@ class ParticleFluid : public FluidSystem,
   // With distribute(): the run's ranks and the particles' traffic between them.
   Communicator ranks_ = Communicator::alone();
   std::unique_ptr<ParticleExchange<D>> exchange_;
+  // The case's periodic axis, if any, and where the case names it.
+  std::optional<PeriodicSpan> periodic_;
+  std::string periodic_key_;
+  std::pair<std::string, int> periodic_place_;
+  // Reads the case's periodic axis, and drops the walls' particles past its sides.
+  void join_periodic_sides(const io::CaseConfig& config, std::vector<Vec<D>>& walls);
   FieldHandle<std::int32_t> owned_kind_;
   bool rcb_ = false;  // the regions: Zoltan's RCB boxes, not slabs
   // distribute()'s split of the whole case over the ranks, at the balance's first cuts.

@@ -45,6 +45,15 @@ struct BoundaryConfig {
   std::string side_name() const { return std::string(1, "xyz"[axis]) + (upper ? "+" : "-"); }
 };
 
+// A periodic pair of sides (`type: periodic`): water that leaves the domain through one side
+// along `axis` enters it through the other, and each side's water sees the other's as its
+// neighbours.
+struct PeriodicAxis {
+  int axis = 0;     // 0 x, 1 y (never the vertical)
+  std::string key;  // "boundaries[N]", for messages
+  int line = 0;
+};
+
 // A damping zone (a "sponge layer"): the water's velocity relaxed towards rest, at a rate that
 // grows from 0 at `from` to `strength` at `to` along `axis` as the square of the distance's
 // share, and stays at `strength` beyond `to` (`to` < `from`: a zone towards the axis's lower

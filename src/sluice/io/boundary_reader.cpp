@@ -109,6 +109,22 @@ BoundaryConfig read_boundary(MapReader& map, std::size_t index, const AxisBox& d
   return b;
 }
 
+PeriodicAxis read_periodic(MapReader& map, std::size_t index, int dimension) {
+  PeriodicAxis p;
+  p.line = map.line();
+  p.key = fmt::format("boundaries[{}]", index);
+  const std::vector<std::string> axes =
+      dimension == 2 ? std::vector<std::string>{"x"} : std::vector<std::string>{"x", "y"};
+  const std::string axis = map.required<std::string>("axis");
+  if (axis == "z") map.fail("axis", "the vertical (z) is not periodic: gravity runs along it");
+  if (std::find(axes.begin(), axes.end(), axis) == axes.end())
+    map.fail_choice("axis", "periodic axis", axis, axes);
+  p.axis = axis[0] - 'x';
+  map.required<std::string>("type");  // "periodic", read by the caller
+  map.finish();
+  return p;
+}
+
 DampingZone read_damping_zone(MapReader& map, std::size_t index, const AxisBox& domain,
                               int dimension) {
   DampingZone z;

@@ -12,6 +12,10 @@ namespace sluice::io {
 BoundaryConfig read_boundary(MapReader& map, std::size_t index, const AxisBox& domain,
                              int dimension, const std::string& case_file);
 
+// One `type: periodic` entry, index `index` of the list, of a case of `dimension`: its axis,
+// horizontal. Throws InputError naming the key.
+PeriodicAxis read_periodic(MapReader& map, std::size_t index, int dimension);
+
 // The speed table's rows (columns `time`, `speed`), sorted in time; problems name `key` of
 // `owner`.
 std::vector<std::pair<double, double>> read_speed_table(const std::string& path,

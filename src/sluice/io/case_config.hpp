@@ -144,6 +144,7 @@ struct CaseConfig {
   FluidConfig fluid;  // no blocks: a case of bodies alone (no model either)
   std::vector<WallConfig> walls;
   std::vector<BoundaryConfig> boundaries;  // open sides of the domain: inlets, outlets
+  std::optional<PeriodicAxis> periodic;    // the sides along one axis joined
   std::vector<DampingZone> damping;        // where the water's motion is relaxed to rest
   std::vector<BodyConfig> bodies;
   ContactConfig contact;

@@ -140,6 +140,44 @@ std::vector<CompareEntry> read_compare(MapReader& top) {
   return entries;
 }
 
+// A periodic axis joins its two sides: no other boundary on them, no wall across them (a tank
+// open there, no plane wall facing along the axis, no box wall reaching past them).
+void check_periodic(const CaseConfig& c) {
+  const PeriodicAxis& p = *c.periodic;
+  const std::string axis(1, "xyz"[p.axis]);
+  for (const BoundaryConfig& b : c.boundaries) {
+    if (b.axis == p.axis) {
+      throw InputError(c.file(), b.line, b.key + ".side",
+                       fmt::format("side {} is joined to the opposite side by {} (periodic)",
+                                   b.side_name(), p.key));
+    }
+  }
+  const double lo = c.domain.min[p.axis], hi = c.domain.max[p.axis];
+  for (std::size_t w = 0; w < c.walls.size(); ++w) {
+    const WallConfig& wall = c.walls[w];
+    const std::string key = fmt::format("walls[{}]", w);
+    if (wall.shape == WallShape::kTank &&
+        (!wall.side_open(p.axis, false) || !wall.side_open(p.axis, true))) {
+      throw InputError(c.file(), wall.line, key + ".open",
+                       fmt::format("the tank closes a side that {} makes periodic: list {}- and "
+                                   "{}+ in its open",
+                                   p.key, axis, axis));
+    }
+    if (wall.shape == WallShape::kPlane && std::abs(wall.normal[p.axis]) > 1e-9) {
+      throw InputError(c.file(), wall.line, key + ".normal",
+                       fmt::format("a plane wall facing along the periodic axis ({}) would not "
+                                   "repeat across its sides: its normal must be across {}",
+                                   axis, axis));
+    }
+    if (wall.shape == WallShape::kBox && (wall.box.min[p.axis] < lo || wall.box.max[p.axis] > hi)) {
+      throw InputError(c.file(), wall.line, key + (wall.box.min[p.axis] < lo ? ".min" : ".max"),
+                       fmt::format("the box reaches past the domain's periodic sides along {} "
+                                   "({} to {} m)",
+                                   axis, lo, hi));
+    }
+  }
+}
+
 }  // namespace
 
 AxisBox read_box(MapReader& map, int dimension) {
@@ -284,6 +322,14 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
   for (auto& wall : top.list_of_maps("walls")) c.walls.push_back(read_wall(wall, c, index++));
   index = 0;
   for (auto& entry : top.list_of_maps("boundaries")) {
+    if (entry.optional<std::string>("type", "") == "periodic") {
+      if (c.periodic) {
+        entry.fail("type", fmt::format("a case has one periodic axis, and {} is one already",
+                                       c.periodic->key));
+      }
+      c.periodic = read_periodic(entry, index++, c.dimension);
+      continue;
+    }
     c.boundaries.push_back(read_boundary(entry, index++, c.domain, c.dimension, file_name));
     for (std::size_t k = 0; k + 1 < c.boundaries.size(); ++k) {
       const BoundaryConfig& earlier = c.boundaries[k];
@@ -293,7 +339,8 @@ CaseConfig read_root(YAML::Node root, const std::string& file_name,
       }
     }
   }
-  if (!c.boundaries.empty() && !c.has_fluid()) {
+  if (c.periodic) check_periodic(c);
+  if ((!c.boundaries.empty() || c.periodic) && !c.has_fluid()) {
     top.fail("boundaries", "a case of bodies alone (no 'fluid') has no open boundaries");
   }
   index = 0;

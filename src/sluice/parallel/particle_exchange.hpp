@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "sluice/core/stage_timer.hpp"
@@ -54,6 +56,17 @@ struct BalancePolicy {
   int bins_per_rank = 64;  // the histogram of work along the axis the cuts are placed on
 };
 
+// Two sides of the domain joined (a periodic axis): along `axis` (of the particles' D axes) a
+// particle that leaves [lo, hi) through one side comes back through the other, and a particle
+// within the halo's depth of one side is seen, as a ghost shifted by the span's length, beyond
+// the other. The ghosts travel as any others (to this rank too), so that a model reads a
+// periodic neighbour as it reads another rank's.
+struct PeriodicSpan {
+  int axis = 0;
+  Real lo = 0, hi = 0;
+  Real length() const { return hi - lo; }
+};
+
 template <int D>
 class ParticleExchange {
  public:
@@ -66,6 +79,10 @@ class ParticleExchange {
         depth_(halo_depth),
         owned_kind_(owned_kind),
         balance_(balance) {}
+
+  // Joins the two sides along `span.axis` (before start()): fluid particles wrap round, and
+  // those within the halo's depth of a side are copied beyond the other.
+  void join_sides(const PeriodicSpan& span) { periodic_ = span; }
 
   // From the whole case, which every rank built alike: keeps this rank's region and takes its
   // ghosts.
@@ -123,12 +140,29 @@ class ParticleExchange {
     const auto at = [](auto& field, std::uint32_t i) {
       return reinterpret_cast<unsigned char*>(field.data()) + sizeof(field[0]) * i;
     };
+    // A periodic ghost's position is its owner's shifted by the span's length.
+    const auto copy_out = [&](auto& field, std::uint32_t i, Real shift, unsigned char*& out) {
+      using Entry = std::decay_t<decltype(field[0])>;
+      if constexpr (std::is_same_v<Entry, Vec<D>>) {
+        if (shift != 0 && static_cast<const void*>(&field) == positions_) {
+          Vec<D> x = field[i];
+          x[periodic_->axis] += shift;
+          std::memcpy(out, &x, sizeof(Entry));
+          out += sizeof(Entry);
+          return;
+        }
+      }
+      std::memcpy(out, at(field, i), sizeof(Entry));
+      out += sizeof(Entry);
+    };
     std::vector<std::vector<unsigned char>> outgoing(sent_.size());
     for (std::size_t r = 0; r < sent_.size(); ++r) {
       outgoing[r].resize(sent_[r].size() * bytes);
       unsigned char* out = outgoing[r].data();
-      for (const std::uint32_t i : sent_[r]) {
-        ((std::memcpy(out, at(fields, i), sizeof(T)), out += sizeof(T)), ...);
+      for (std::size_t k = 0; k < sent_[r].size(); ++k) {
+        const std::uint32_t i = sent_[r][k];
+        const Real shift = sent_shift_[r].empty() ? 0 : sent_shift_[r][k];
+        (copy_out(fields, i, shift, out), ...);
       }
     }
     const std::vector<std::vector<unsigned char>> incoming = ranks_.exchange(outgoing);
@@ -188,6 +222,8 @@ class ParticleExchange {
         gone_[i] = true;
         continue;
       }
+      if (periodic_ && owned[i] == static_cast<std::int32_t>(ParticleKind::kFluid))
+        wrap(ps.position[i]);
       const int r = regions_.owner(ps.position[i]);
       if (r == ranks_.rank()) continue;
       leaving[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
@@ -268,30 +304,85 @@ class ParticleExchange {
     return true;
   }
 
-  // Appends to the set the copies of the other ranks' particles within the halo's depth.
+  // A fluid particle past a periodic side, brought back through the other.
+  void wrap(Vec<D>& x) const {
+    Real& c = x[periodic_->axis];
+    if (c >= periodic_->hi) c -= periodic_->length();
+    if (c < periodic_->lo) c += periodic_->length();
+  }
+
+  // Appends to the set the copies of the other ranks' particles within the halo's depth, and
+  // with a periodic axis the copies, shifted, of every rank's particles within it of a side
+  // (this rank's own too).
   void take_ghosts(ParticleSet<D>& ps) {
     const std::size_t before = ps.size();
-    std::vector<std::vector<std::uint32_t>> copies(static_cast<std::size_t>(ranks_.size()));
+    const auto ranks = static_cast<std::size_t>(ranks_.size());
+    // By rank: the plain copies, and those shifted up and down by the periodic span.
+    constexpr int kShifts = 3;
+    std::vector<std::vector<std::uint32_t>> copies[kShifts];
+    for (auto& c : copies) c.resize(ranks);
+    const Real shifts[kShifts] = {0, periodic_ ? periodic_->length() : 0,
+                                  periodic_ ? -periodic_->length() : 0};
     const auto& own = ps[owned_kind_];
     for (std::size_t i = 0; i < before; ++i) {
       if (own[i] < 0 || gone_[i]) continue;
+      const auto index = static_cast<std::uint32_t>(i);
       regions_.for_each_rank_near(ps.position[i], depth_, ranks_.rank(), [&](int r) {
-        copies[static_cast<std::size_t>(r)].push_back(static_cast<std::uint32_t>(i));
+        copies[0][static_cast<std::size_t>(r)].push_back(index);
+      });
+      if (!periodic_) continue;
+      const Real c = ps.position[i][periodic_->axis];
+      const int shift = c < periodic_->lo + depth_ ? 1 : c >= periodic_->hi - depth_ ? 2 : 0;
+      if (shift == 0) continue;
+      Vec<D> image = ps.position[i];
+      image[periodic_->axis] += shifts[shift];
+      regions_.for_each_rank_near(image, depth_, -1, [&](int r) {
+        copies[shift][static_cast<std::size_t>(r)].push_back(index);
       });
     }
-    const std::vector<std::vector<unsigned char>> incoming = ranks_.exchange(packed(ps, copies));
-    counts_.ghosts = append(ps, incoming);
+    // One exchange for the plain copies and one for each shift (a packed buffer holds one
+    // field after another, so a buffer's particles share theirs). refresh()'s plan: each rank's
+    // copies, plain then shifted, with each one's shift (none without a periodic axis), and
+    // where each rank's landed here, in the same order.
+    positions_ = &ps.position;
+    counts_.ghosts = 0;
+    sent_.assign(ranks, {});
+    received_.assign(ranks, {});
+    sent_shift_.assign(ranks, {});
+    for (int k = 0; k < (periodic_ ? kShifts : 1); ++k) {
+      std::vector<std::vector<unsigned char>> outgoing(ranks);
+      for (std::size_t r = 0; r < ranks; ++r) {
+        const std::vector<std::uint32_t>& which = copies[k][r];
+        sent_[r].insert(sent_[r].end(), which.begin(), which.end());
+        if (periodic_) sent_shift_[r].resize(sent_[r].size(), shifts[k]);
+        if (!which.empty()) pack_shifted(ps, which, shifts[k], outgoing[r]);
+      }
+      const std::vector<std::vector<unsigned char>> incoming = ranks_.exchange(outgoing);
+      auto next = static_cast<std::uint32_t>(ps.size());
+      counts_.ghosts += append(ps, incoming);
+      for (std::size_t r = 0; r < ranks; ++r) {
+        for (std::size_t n = incoming[r].size() / ps.bytes_per_particle(); n > 0; --n)
+          received_[r].push_back(next++);
+      }
+    }
     auto& owned = ps[owned_kind_];
     for (std::size_t i = before; i < ps.size(); ++i) owned[i] = -1;
     gone_.resize(ps.size(), false);
-    // refresh()'s plan: what went where, and where each rank's copies landed here.
-    sent_ = std::move(copies);
-    received_.assign(incoming.size(), {});
-    std::uint32_t next = static_cast<std::uint32_t>(before);
-    for (std::size_t r = 0; r < incoming.size(); ++r) {
-      received_[r].resize(incoming[r].size() / ps.bytes_per_particle());
-      for (std::uint32_t& i : received_[r]) i = next++;
+  }
+
+  // The particles `which` packed (appended to `buffer`) with their positions moved by `shift`
+  // along the periodic axis; put back as they were after.
+  void pack_shifted(ParticleSet<D>& ps, const std::vector<std::uint32_t>& which, Real shift,
+                    std::vector<unsigned char>& buffer) const {
+    if (shift == 0) return ps.pack(which, buffer);
+    std::vector<Real> kept(which.size());
+    for (std::size_t k = 0; k < which.size(); ++k) {
+      Real& c = ps.position[which[k]][periodic_->axis];
+      kept[k] = c;
+      c += shift;
     }
+    ps.pack(which, buffer);
+    for (std::size_t k = 0; k < which.size(); ++k) ps.position[which[k]][periodic_->axis] = kept[k];
   }
 
   std::vector<std::vector<unsigned char>> packed(
@@ -328,6 +419,11 @@ class ParticleExchange {
   // The last take_ghosts' plan, by rank: this rank's particles copied to it, and the ghosts it
   // sent here (indices into the set, which follow() keeps up with the neighbour sort).
   std::vector<std::vector<std::uint32_t>> sent_, received_;
+  // With a periodic axis: the span, each copy's shift along it (as sent_), and the set's
+  // positions (the field whose refresh() shifts them).
+  std::optional<PeriodicSpan> periodic_;
+  std::vector<std::vector<Real>> sent_shift_;
+  const void* positions_ = nullptr;
 };
 
 }  // namespace sluice

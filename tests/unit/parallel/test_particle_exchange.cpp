@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "sluice/parallel/communicator.hpp"
@@ -29,6 +30,62 @@ TEST(ParticleExchange, OneRankKeepsEveryParticleAndTakesNoGhost) {
   EXPECT_EQ(exchange.last().ghosts, 0u);
   EXPECT_EQ(exchange.gone(), std::vector<bool>(6, false));
   EXPECT_EQ(ps.position[2][0], 5.0);
+}
+
+// A periodic axis on one rank: particles within the halo's depth of a side come back, shifted
+// by the span, beyond the other as ghosts (every field copied, the position shifted); a fluid
+// particle that left through a side comes in through the other, a wall particle never moves;
+// refresh() brings the ghosts' fields up to date, their positions shifted again.
+TEST(ParticleExchange, APeriodicAxisWrapsFluidAndCopiesEachSideBeyondTheOther) {
+  ParticleSet<2> ps;
+  const auto owned = ps.add_int_field({"owned_kind", "1", false});
+  const auto tag = ps.add_scalar_field({"tag", "1"});
+  // Along x in [0, 1): near the lower side, the middle, near the upper side; then a wall
+  // particle near the lower side.
+  for (const double x : {0.05, 0.5, 0.95}) {
+    ps.add(Vec<2>(x, 0.2), Vec<2>::Zero(), 1000, 1, ParticleKind::kFluid);
+    ps[tag].back() = x;
+  }
+  ps.add(Vec<2>(0.15, -0.1), Vec<2>::Zero(), 1000, 1, ParticleKind::kWall);
+  ps[tag].back() = -1;
+  ParticleExchange<2> exchange(Communicator::alone(), Decomposition(), 0.2, owned);
+  exchange.join_sides(PeriodicSpan{0, 0.0, 1.0});
+  exchange.start(ps);
+  // The two fluid particles near a side and the wall particle, each imaged once.
+  ASSERT_EQ(ps.size(), 7u);
+  EXPECT_EQ(exchange.last().ghosts, 3u);
+  const auto ghost_at = [&](double x) {
+    for (std::size_t i = 4; i < ps.size(); ++i) {
+      if (std::abs(ps.position[i][0] - x) < 1e-12) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  const int upper_image = ghost_at(1.05), lower_image = ghost_at(-0.05),
+            wall_image = ghost_at(1.15);
+  ASSERT_GE(upper_image, 0);
+  ASSERT_GE(lower_image, 0);
+  ASSERT_GE(wall_image, 0);
+  EXPECT_EQ(ps[tag][static_cast<std::size_t>(upper_image)], 0.05);
+  EXPECT_EQ(ps[owned][static_cast<std::size_t>(upper_image)], -1);
+  EXPECT_EQ(ps.kind[static_cast<std::size_t>(wall_image)], ParticleKind::kWall);
+  EXPECT_EQ(ps.position[static_cast<std::size_t>(wall_image)][1], -0.1);
+
+  // The owners change; refresh() copies their tags and positions, shifted.
+  ps[tag][0] = 7;
+  ps.position[0][0] = 0.07;
+  exchange.refresh(ps[tag], ps.position);
+  EXPECT_EQ(ps[tag][static_cast<std::size_t>(upper_image)], 7);
+  EXPECT_NEAR(ps.position[static_cast<std::size_t>(upper_image)][0], 1.07, 1e-12);
+  EXPECT_NEAR(ps.position[static_cast<std::size_t>(lower_image)][0], -0.05, 1e-12);
+
+  // The particle near the upper side moves past it; the wall particle is moved past the lower
+  // side (as no stage would): the first wraps round, the second stays where it is.
+  ps.position[2][0] = 1.02;
+  ps.position[3][0] = -0.01;
+  exchange.exchange(ps);
+  EXPECT_NEAR(ps.position[2][0], 0.02, 1e-12);
+  EXPECT_EQ(ps.position[3][0], -0.01);
+  for (std::size_t i = 4; i < 7; ++i) EXPECT_TRUE(exchange.gone()[i]);  // last exchange's ghosts
 }
 
 TEST(Communicator, AProcessAloneIsItsOwnAnswer) {

@@ -36,8 +36,9 @@ std::unique_ptr<FluidSystem> make_mps(const io::CaseConfig& config, const BodyGe
   auto model = std::make_unique<MpsModel<D>>(parameters, config, bodies, ranks);
   // Split before the first neighbour list, which each rank then builds over its own particles
   // and its ghosts: two neighbour radii of them (a ghost's number density, its surface and its
-  // row number are read where it is a neighbour, and they come from its own neighbours).
-  if (ranks.split()) model->distribute(ranks, 2 * model->interaction_radius());
+  // row number are read where it is a neighbour, and they come from its own neighbours); a
+  // periodic side's images likewise.
+  model->distribute(ranks, 2 * model->interaction_radius());
   model->initialize();
   return model;
 }
@@ -54,6 +55,7 @@ ModelEntry mps_entry() {
   entry.devices = {"cpu", "emulated"};
   entry.one_rank_only.clear();
   entry.open_boundaries = true;
+  entry.periodic = true;
   entry.damping_zones = true;
   return entry;
 }

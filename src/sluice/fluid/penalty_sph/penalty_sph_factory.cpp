@@ -42,6 +42,7 @@ ModelEntry penalty_sph_entry() {
   entry.schemes = {"spring-exchanges"};
   entry.devices = {"cpu", "emulated"};
   entry.one_rank_only.clear();
+  entry.periodic = true;
   entry.damping_zones = true;
   return entry;
 }

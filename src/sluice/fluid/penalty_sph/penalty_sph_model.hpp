@@ -104,8 +104,8 @@ class PenaltySphModel final : public ParticleFluid<D> {
     has_bodies_ = this->body_points().size() > 0;
     contact_support_ = contact_support();
     // Split once the solid layers stand, before the first rates, which each rank then works out
-    // over its own particles and its ghosts.
-    if (split_) this->distribute(*split_, halo_depth());
+    // over its own particles and its ghosts (a periodic side's images too).
+    this->distribute(split_.value_or(Communicator::alone()), halo_depth());
     compute_density();
     compute_forces();
     measure_extremes();

@@ -14,16 +14,16 @@ std::unique_ptr<FluidSystem> build(const WcsphParameters& p, const io::CaseConfi
                                    const BodyGeometry& bodies, const ModelServices& services) {
   refuse_device_with_open_water(config, p.device != WcsphDevice::kCpu);
   auto model = std::make_unique<WcsphModel<D, Kernel>>(p, config, bodies);
-  if (services.split()) {
-    if (p.device != WcsphDevice::kCpu) {
-      throw InputError(config.file(), config.model_line, "model.device",
-                       "a run on several ranks runs on the CPU for now (device: cpu)");
-    }
-    // A ghost wall's pressure comes from the fluid within a support of it, which a fluid
-    // particle a support inside the slab reads: two supports of ghosts. Split before the
-    // model's first rates, which it then works out over the rank's own particles and ghosts.
-    model->distribute(*services.ranks, 2 * model->interaction_radius());
+  if (services.split() && p.device != WcsphDevice::kCpu) {
+    throw InputError(config.file(), config.model_line, "model.device",
+                     "a run on several ranks runs on the CPU for now (device: cpu)");
   }
+  // A ghost wall's pressure comes from the fluid within a support of it, which a fluid
+  // particle a support inside the slab reads: two supports of ghosts (a periodic side's images
+  // too). Split before the model's first rates, which it then works out over the rank's own
+  // particles and ghosts.
+  model->distribute(services.split() ? *services.ranks : Communicator::alone(),
+                    2 * model->interaction_radius());
   model->initialize();
   return model;
 }
@@ -52,6 +52,7 @@ ModelEntry wcsph_entry() {
   entry.devices = {"cpu", "gpu", "emulated"};
   entry.one_rank_only.clear();
   entry.open_boundaries = true;
+  entry.periodic = true;
   entry.damping_zones = true;
   return entry;
 }

@@ -1,0 +1,130 @@
+// A periodic axis for the particle models: plane Poiseuille flow (cases/poiseuille_2d.yaml;
+// Morris, Fox & Zhu 1997), water between two no-slip plates 0.1 m apart, driven from rest along a
+// periodic x by a body force F = 0.8 m/s^2 with nu = 0.01 m^2/s. The exact answer is the series
+//   u(z, t) = F z (d - z) / (2 nu) - sum_n 4 F d^2 / (nu pi^3 (2n+1)^3) sin((2n+1) pi z / d)
+//             exp(-(2n+1)^2 pi^2 nu t / d^2),
+// which reaches the parabola of 0.1 m/s at the middle after about 1 s.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "physics_support.hpp"
+#include "reported_figure.hpp"
+
+namespace sluice {
+namespace {
+
+using testing::load_case;
+using testing::run_until;
+
+constexpr double kForce = 0.8, kNu = 0.01, kGap = 0.1;
+constexpr double kCentreSpeed = kForce * kGap * kGap / (8 * kNu);  // 0.1 m/s
+
+double series_speed(double z, double t) {
+  const double pi = std::numbers::pi;
+  double u = kForce * z * (kGap - z) / (2 * kNu);
+  for (int n = 0; n < 100; ++n) {
+    const double k = 2 * n + 1;
+    u -= 4 * kForce * kGap * kGap / (kNu * pi * pi * pi * k * k * k) * std::sin(k * pi * z / kGap) *
+         std::exp(-k * k * pi * pi * kNu * t / (kGap * kGap));
+  }
+  return u;
+}
+
+struct FlowFigures {
+  std::size_t fluid = 0;        // fluid particles at the end (400 at the start)
+  double rms[3] = {};           // from the series at 0.1, 0.3 and 1.5 s, over the centre speed
+  double mean_speed = 0;        // over the fluid at 1.5 s, over the series' mean (2/3 of 0.1)
+  double ends_from_middle = 0;  // mean speed within 0.02 m of a side from that between them
+};
+
+FlowFigures run_poiseuille(const std::vector<std::string>& overrides) {
+  Simulation<2> sim(load_case("poiseuille_2d.yaml", overrides));
+  FlowFigures f;
+  const double times[3] = {0.1, 0.3, 1.5};
+  for (int k = 0; k < 3; ++k) {
+    run_until(sim, times[k], [](const StepClock&) {});
+    const FluidView view = sim.fluid().observation().view();
+    const auto x = view.positions.reals();
+    std::span<const double> velocity;
+    std::span<const std::int32_t> kind;
+    for (const FieldView& field : view.fields) {
+      if (field.name() == "velocity") velocity = field.reals();
+      if (field.name() == "kind") kind = field.integers();
+    }
+    double square = 0, sum = 0, series_sum = 0, ends = 0, middle = 0;
+    std::size_t n = 0, n_ends = 0;
+    for (std::size_t i = 0; i < kind.size(); ++i) {
+      if (kind[i] != 0) continue;
+      const double z = x[2 * i + 1], u = velocity[2 * i];  // 2D: (x, z)
+      const double error = u - series_speed(z, times[k]);
+      square += error * error;
+      sum += u;
+      series_sum += series_speed(z, times[k]);
+      const bool near_side = x[2 * i] < 0.02 || x[2 * i] > kGap - 0.02;
+      (near_side ? ends : middle) += u;
+      n_ends += near_side ? 1 : 0;
+      ++n;
+    }
+    f.rms[k] = std::sqrt(square / static_cast<double>(n)) / kCentreSpeed;
+    f.fluid = n;
+    f.mean_speed = sum / series_sum;
+    f.ends_from_middle =
+        (ends / static_cast<double>(n_ends)) / (middle / static_cast<double>(n - n_ends)) - 1;
+  }
+  std::printf(
+      "poiseuille: %zu fluid particles; RMS from the series %.4f, %.4f, %.4f of the centre "
+      "speed at 0.1, 0.3, 1.5 s; mean speed %+.3f %% from the series'; ends from middle %+.3f %%\n",
+      f.fluid, f.rms[0], f.rms[1], f.rms[2], 100 * (f.mean_speed - 1), 100 * f.ends_from_middle);
+  return f;
+}
+
+// wcsph at 0.005 m (20 particles across). Measured (release and baseline builds, 1 and 2
+// threads): RMS 0.50, 1.32, 1.61 % of the centre speed at 0.1, 0.3, 1.5 s; the mean speed 2.3 %
+// above the series' (the flow's width is the plates' wall particles' reach, a fraction of a
+// spacing wider than d); ends and middle alike to 0.000 % (the seam breaks no symmetry). Bars:
+// 4 % RMS, ends within 1 %.
+TEST(Periodic, WcsphPoiseuilleFlowFollowsTheSeriesSolution) {
+  const FlowFigures f = run_poiseuille({});
+  EXPECT_EQ(f.fluid, 400u);  // none lost or doubled at the sides
+  for (int k = 0; k < 3; ++k) {
+    testing::expect_figure({"Poiseuille `wcsph` (0.005 m): RMS speed from the series at " +
+                                std::string(k == 0   ? "0.1"
+                                            : k == 1 ? "0.3"
+                                                     : "1.5") +
+                                " s",
+                            "% of 0.1 m/s", 2},
+                           100 * f.rms[k], testing::Bound::below, 4);
+  }
+  testing::expect_figure(
+      {"Poiseuille `wcsph` (0.005 m): mean speed near the sides from between", "%", 2},
+      100 * f.ends_from_middle, testing::Bound::within, 1);
+}
+
+// mps and penalty-sph: their walls hold the water back less than a no-slip plate (mps's wall
+// particles' velocity is not mirrored; penalty-sph's walls are penalty solids with a friction
+// law), so the flow runs faster than the series: reported as a limit. Measured at 1.5 s: mps
+// RMS 12.1 % of the centre speed, mean speed 18 % above the series'; penalty-sph 10.3 % and
+// 15 %. The periodic axis itself is checked as for wcsph: no particle lost or doubled, and the
+// flow alike at the sides and between them (0.000 % apart in either).
+TEST(Periodic, MpsAndPenaltySphCarryTheFlowAcrossTheSides) {
+  for (const std::string model : {"mps", "penalty-sph"}) {
+    const FlowFigures f = run_poiseuille({"model={name: " + model + "}"});
+    EXPECT_EQ(f.fluid, 400u) << model;
+    testing::report_limit(
+        {"Poiseuille `" + model + "` (0.005 m): RMS speed from the series at 1.5 s", "% of 0.1 m/s",
+         2},
+        100 * f.rms[2], testing::Bound::below, 4);
+    testing::expect_figure(
+        {"Poiseuille `" + model + "` (0.005 m): mean speed near the sides from between", "%", 2},
+        100 * f.ends_from_middle, testing::Bound::within, 1);
+  }
+}
+
+}  // namespace
+}  // namespace sluice

@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""F10: plane Poiseuille flow across a periodic axis (issue 43; Morris, Fox & Zhu 1997).
+
+Runs cases/poiseuille_2d.yaml (water between no-slip plates 0.1 m apart, driven from rest
+along a periodic x by a body force of 0.8 m/s^2, nu = 0.01 m^2/s) to 1.5 s with wcsph at 0.005
+and 0.0025 m and with mps and penalty-sph at 0.005 m. At 0.1, 0.3 and 1.5 s it compares the
+fluid particles' speed along x with the series solution
+  u(z, t) = F z (d - z) / (2 nu) - sum_n 4 F d^2 / (nu pi^3 (2n+1)^3) sin((2n+1) pi z / d)
+            exp(-(2n+1)^2 pi^2 nu t / d^2):
+the RMS difference over the particles as a share of the steady centre speed (0.1 m/s; the
+physics test's bar for wcsph is 4 %), the mean speed from the series' mean, and the mean
+speed within 0.02 m of a periodic side from that between them. Writes docs/validation.md's
+table f10-poiseuille and docs/img/f10_poiseuille.png; each run's profiles.csv (the particles'
+mean speed in each row, at each time) is kept in validation/results/.
+
+usage: /usr/bin/python3 validation/poiseuille.py [--no-run] [--runs wcsph@0.005,...]
+"""
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from frames import read_frame
+from runs import (each_run, keep_results, model_runs_parser, read_columns, result_path,
+                  result_statistics, run_model, save_figure, write_table)
+
+CASE = "poiseuille_2d"
+FORCE, NU, GAP = 0.8, 0.01, 0.1
+CENTRE = FORCE * GAP ** 2 / (8 * NU)
+TIMES = (0.1, 0.3, 1.5)  # frames 1, 3 and 15 (output_interval 0.1 s)
+END = 1.5
+
+
+def series(z, t):
+    u = FORCE * z * (GAP - z) / (2 * NU)
+    for n in range(100):
+        k = 2 * n + 1
+        u = u - (4 * FORCE * GAP ** 2 / (NU * np.pi ** 3 * k ** 3) * np.sin(k * np.pi * z / GAP)
+                 * np.exp(-k * k * np.pi ** 2 * NU * t / GAP ** 2))
+    return u
+
+
+def write_profiles(out, spacing):
+    """out/profiles.csv: time, the row's height and the mean speed of its particles."""
+    with open(os.path.join(out, "profiles.csv"), "w") as f:
+        f.write("time,z,speed,near_sides\n")
+        for t in TIMES:
+            frame = os.path.join(out, "frames", f"frame_{int(round(t / 0.1)):06d}.vtp")
+            points, fields = read_frame(frame, "velocity", "kind")
+            water = fields["kind"] == 0
+            x, z, u = points[water, 0], points[water, 2], fields["velocity"][water, 0]
+            rows = np.round(z / spacing - 0.5).astype(int)
+            for r in np.unique(rows):
+                here = rows == r
+                near = here & ((x < 0.02) | (x > GAP - 0.02))
+                f.write(f"{t:g},{z[here].mean():.8g},{u[here].mean():.8g},"
+                        f"{u[near].mean():.8g}\n")
+
+
+def figures(out, name):
+    p = read_columns(result_path(out, name, "profiles.csv"))
+    f = {"rms": [], "profiles": []}
+    for t in TIMES:
+        at = p["time"] == t
+        z, u, near = p["z"][at], p["speed"][at], p["near_sides"][at]
+        exact = series(z, t)
+        # Every row holds as many particles (a lattice that slides along x): rows weigh alike.
+        f["rms"].append(100 * np.sqrt(np.mean((u - exact) ** 2)) / CENTRE)
+        f["profiles"].append((t, z, u))
+        f["mean"] = 100 * (u.mean() / exact.mean() - 1)
+        f["ends"] = 100 * (near.mean() / u.mean() - 1)
+    return f
+
+
+def main():
+    parser = model_runs_parser(CASE, __doc__,
+                               "wcsph@0.005,wcsph@0.0025,mps@0.005,penalty-sph@0.005")
+    args = parser.parse_args()
+    rows, results = [], []
+    for model, spacing in each_run(args.runs):
+        name = f"f10_{model}_{spacing:g}"
+        out = os.path.join(args.out, name)
+        if not args.no_run:
+            run_model(CASE, out, model, spacing, END, args)
+            write_profiles(out, spacing)
+            keep_results(out, name, ("profiles.csv",))
+        f = figures(out, name)
+        statistics = result_statistics(out, name)
+        wall = (f"{statistics['wall']:.0f} s ({statistics['threads']} thread"
+                f"{'s' if statistics['threads'] > 1 else ''})" if statistics else "")
+        rows.append(f"| `{model}` | {spacing:g} | " + " | ".join(f"{r:.2f} %" for r in f["rms"]) +
+                    f" | {f['mean']:+.2f} % | {f['ends']:+.3f} % | {wall} |")
+        results.append((model, spacing, f))
+    table = ("| model | spacing [m] | RMS from the series at 0.1 s | at 0.3 s | at 1.5 s "
+             "(wcsph's bar 4 %) | mean speed at 1.5 s from the series' | mean speed near the "
+             "sides from the whole | wall time |\n|---|---|---|---|---|---|---|---|\n" +
+             "\n".join(rows) + "\n")
+    write_table("validation.md", "f10-poiseuille", table)
+
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    zz = np.linspace(0, GAP, 201)
+    for t in TIMES:
+        ax.plot(series(zz, t), zz, color="k", lw=0.8)
+    markers = "os^v"
+    for k, (model, spacing, f) in enumerate(results):
+        for j, (t, z, u) in enumerate(f["profiles"]):
+            ax.plot(u, z, markers[k % len(markers)], ms=3, mfc="none",
+                    color=f"C{k}", label=f"{model} {spacing:g} m" if j == 0 else None)
+    for t in TIMES:
+        ax.annotate(f"{t:g} s", (series(np.array([GAP / 2]), t)[0], GAP / 2),
+                    xytext=(4, 0), textcoords="offset points", fontsize=8)
+    ax.set_xlabel("speed along the periodic x [m/s] (lines: the series solution)")
+    ax.set_ylabel("height above the lower plate [m]")
+    ax.legend(fontsize=7, loc="lower right")
+    save_figure(fig, "f10_poiseuille.png")
+
+
+if __name__ == "__main__":
+    main()
