@@ -1,7 +1,8 @@
 """Reading one output frame (a .vtp file of sluice's series): its points and the point fields
-asked for, as numpy arrays."""
+asked for, as numpy arrays; and the grid model's cells (a .vti file) alike."""
+import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
 
 
 def read_frame(path, *fields):
@@ -13,3 +14,20 @@ def read_frame(path, *fields):
     values = data.GetPointData()
     return (vtk_to_numpy(data.GetPoints().GetData()),
             {name: vtk_to_numpy(values.GetArray(name)) for name in fields})
+
+
+def read_grid(path, *fields):
+    """(centres, {name: values}) of the grid model's cells in the .vti at `path`: the cells'
+    centres n x 3 (x fastest, then y, then z), each cell field n or n x 3."""
+    reader = vtkXMLImageDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    extent, origin, spacing = image.GetExtent(), image.GetOrigin(), image.GetSpacing()
+    # A 2D grid's y extent is one point (no cells along it): its cells lie at its y.
+    axes = [origin[a] + spacing[a] * (np.arange(extent[2 * a], extent[2 * a + 1]) + 0.5)
+            if extent[2 * a + 1] > extent[2 * a] else np.array([origin[a]]) for a in range(3)]
+    z, y, x = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")
+    centres = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
+    values = image.GetCellData()
+    return centres, {name: vtk_to_numpy(values.GetArray(name)) for name in fields}

@@ -38,6 +38,36 @@ TEST(MacLattice, SamplesLinearFieldsExactlyAndExtrapolatesHalfACell) {
 
 // A smooth bump carried across the grid by a uniform flow and back: MacCormack's error is at
 // most a third of plain semi-Lagrangian's, and it makes no new extremum.
+// A periodic axis: as many faces as cells along it, indices and samples read across the seam
+// (a field periodic on the grid is sampled exactly as its linear interpolation across it), and
+// a point past a side comes back through the other.
+TEST(MacLattice, APeriodicAxisRepeatsEveryLattice) {
+  MacGrid<2> grid;
+  grid.cells = {8, 4};
+  grid.h = 0.25;  // x in [0, 2)
+  grid.periodic_axis = 0;
+  EXPECT_EQ(grid.face_lattice(0).dims[0], 8);
+  EXPECT_EQ(grid.face_lattice(1).dims[1], 5);
+  EXPECT_EQ(grid.node_lattice().dims[0], 8);
+  EXPECT_FALSE(grid.on_boundary(0, 0));
+  EXPECT_TRUE(grid.on_boundary(1, 0));
+  const Lattice<2> cells = grid.cell_lattice();
+  EXPECT_TRUE(cells.contains({-1, 0}));
+  EXPECT_FALSE(cells.contains({0, 4}));
+  EXPECT_EQ(cells.index({-1, 2}), cells.index({7, 2}));
+  EXPECT_EQ(cells.index({8, 2}), cells.index({0, 2}));
+  std::vector<Real> values(cells.size());
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = cells.coordinates(k)[0];  // 0..7
+  // Halfway between the last cell's centre (x = 1.875, value 7) and the first's beyond the
+  // seam (x = 2.125, value 0), and the same a period on.
+  EXPECT_DOUBLE_EQ(cells.sample(values, Vec<2>(2.0, 0.5)), 3.5);
+  EXPECT_DOUBLE_EQ(cells.sample(values, Vec<2>(0.0, 0.5)), 3.5);
+  EXPECT_DOUBLE_EQ(cells.sample(values, Vec<2>(0.875 + 4.0, 0.5)), 3.0);
+  EXPECT_DOUBLE_EQ(grid.wrapped(Vec<2>(2.1, 0.3))[0], 2.1 - 2.0);
+  EXPECT_DOUBLE_EQ(grid.wrapped(Vec<2>(-0.1, 0.3))[0], 1.9);
+  EXPECT_DOUBLE_EQ(grid.wrapped(Vec<2>(-0.1, 0.3))[1], 0.3);
+}
+
 TEST(MacAdvection, MacCormackBeatsSemiLagrangianWithoutNewExtrema) {
   const MacGrid<2> grid = unit_square(64);
   const Lattice<2> cells = grid.cell_lattice();

@@ -41,6 +41,7 @@ ModelEntry mac_entry() {
   entry.schemes = {"projection", "held-loads"};
   entry.one_rank_only = "its grid is not split over ranks yet";
   entry.open_boundaries = true;
+  entry.periodic = true;
   entry.damping_zones = true;
   return entry;
 }

@@ -26,6 +26,9 @@ struct Lattice {
   GridIndex<D> dims{};
   Vec<D> first = Vec<D>::Zero();
   Real h = 1;
+  // The axis along which the lattice repeats every dims points (a periodic grid's), or -1. Along
+  // it every coordinate is held: index() takes its remainder, and sample() reads across the seam.
+  int wrap_axis = -1;
 
   std::size_t size() const {
     std::size_t n = 1;
@@ -34,7 +37,10 @@ struct Lattice {
   }
   std::size_t index(const GridIndex<D>& c) const {
     std::size_t k = 0;
-    for (int a = D - 1; a >= 0; --a) k = k * static_cast<std::size_t>(dims[a]) + c[a];
+    for (int a = D - 1; a >= 0; --a) {
+      const int ca = a == wrap_axis ? ((c[a] % dims[a]) + dims[a]) % dims[a] : c[a];
+      k = k * static_cast<std::size_t>(dims[a]) + static_cast<std::size_t>(ca);
+    }
     return k;
   }
   GridIndex<D> coordinates(std::size_t k) const {
@@ -47,7 +53,7 @@ struct Lattice {
   }
   bool contains(const GridIndex<D>& c) const {
     for (int a = 0; a < D; ++a)
-      if (c[a] < 0 || c[a] >= dims[a]) return false;
+      if (a != wrap_axis && (c[a] < 0 || c[a] >= dims[a])) return false;
     return true;
   }
   // Distance between neighbours along `axis` in the storage.
@@ -70,6 +76,12 @@ struct Lattice {
     GridIndex<D> base;
     std::array<Real, D> t;
     for (int a = 0; a < D; ++a) {
+      if (a == wrap_axis) {
+        const Real s = (x[a] - first[a]) / h;
+        base[a] = static_cast<int>(std::floor(s));
+        t[a] = s - base[a];
+        continue;
+      }
       const Real s = std::clamp((x[a] - first[a]) / h, -reach, Real(dims[a] - 1) + reach);
       base[a] = std::clamp(static_cast<int>(std::floor(s)), 0, std::max(dims[a] - 2, 0));
       t[a] = dims[a] > 1 ? s - base[a] : 0;
@@ -80,7 +92,7 @@ struct Lattice {
       Real w = 1;
       for (int a = 0; a < D; ++a) {
         const bool up = (corner >> a) & 1;
-        if (up) c[a] = std::min(c[a] + 1, dims[a] - 1);
+        if (up) c[a] = a == wrap_axis ? c[a] + 1 : std::min(c[a] + 1, dims[a] - 1);
         w *= up ? t[a] : 1 - t[a];
       }
       const Real v = values[index(c)];
@@ -99,20 +111,40 @@ struct MacGrid {
   GridIndex<D> cells{};
   Vec<D> origin = Vec<D>::Zero();  // the lower corner of the first cell
   Real h = 1;                      // the cells' edge
+  // The axis whose two sides are joined (a periodic case's), or -1: along it the last cell's
+  // upper face is the first cell's lower one, and every lattice repeats.
+  int periodic_axis = -1;
 
-  Lattice<D> cell_lattice() const { return {cells, origin + Vec<D>::Constant(0.5 * h), h}; }
-  // The faces normal to `axis`: one more than the cells along it, on the cells' walls.
+  Lattice<D> cell_lattice() const {
+    return {cells, origin + Vec<D>::Constant(0.5 * h), h, periodic_axis};
+  }
+  // The faces normal to `axis`: one more than the cells along it, on the cells' walls (as many
+  // along the periodic axis, the last face being the first).
   Lattice<D> face_lattice(int axis) const {
     Lattice<D> l = cell_lattice();
-    l.dims[axis] += 1;
+    if (axis != periodic_axis) l.dims[axis] += 1;
     l.first[axis] = origin[axis];
     return l;
   }
   // The cells' corners.
   Lattice<D> node_lattice() const {
-    Lattice<D> l{cells, origin, h};
-    for (int a = 0; a < D; ++a) l.dims[a] += 1;
+    Lattice<D> l{cells, origin, h, periodic_axis};
+    for (int a = 0; a < D; ++a)
+      if (a != periodic_axis) l.dims[a] += 1;
     return l;
+  }
+  // Whether the faces of `axis` at coordinate c along it lie on the grid's boundary (never
+  // along the periodic axis).
+  bool on_boundary(int axis, int c) const {
+    return axis != periodic_axis && (c == 0 || c == cells[axis]);
+  }
+  // x brought into the grid's span along the periodic axis, where it left it.
+  Vec<D> wrapped(Vec<D> x) const {
+    if (periodic_axis < 0) return x;
+    const Real length = cells[periodic_axis] * h;
+    Real& c = x[periodic_axis];
+    c -= length * std::floor((c - origin[periodic_axis]) / length);
+    return x;
   }
   std::size_t cell_count() const { return cell_lattice().size(); }
 };

@@ -57,6 +57,7 @@ MacGrid<D> mac_grid_of(const io::CaseConfig& config, const MacParameters& p) {
     }
     grid.cells[a] = static_cast<int>(whole);
   }
+  if (config.periodic) grid.periodic_axis = D == 3 ? config.periodic->axis : 0;
   return grid;
 }
 

@@ -79,7 +79,7 @@ void ParticleLevelSet<D>::advect(const MacGrid<D>& grid, const FaceField<D>& u, 
   exec::Default::for_each(markers_.size(), [&](std::size_t i) {
     Vec<D>& x = markers_[i].x;
     const Vec<D> middle = x + 0.5 * dt * velocity_at(grid, u, x);
-    x += dt * velocity_at(grid, u, middle);
+    x = grid.wrapped(x + dt * velocity_at(grid, u, middle));
   });
 }
 

@@ -161,7 +161,7 @@ void SolidBoundary<D>::fill_faces(const std::vector<BodyKinematics>& motion) {
       // is open, that deep inside one closed. On the grid's boundary it has no far side.
       const Real nearest = *std::min_element(corner.begin(), corner.end());
       const Real farthest = *std::max_element(corner.begin(), corner.end());
-      const bool on_boundary = c[a] == 0 || c[a] == grid_.cells[a];
+      const bool on_boundary = grid_.on_boundary(a, c[a]);
       Real open = nearest >= 1.5 * grid_.h    ? Real(1)
                   : farthest < -1.5 * grid_.h ? Real(0)
                   : on_boundary

@@ -61,8 +61,9 @@ void cut_tetrahedron(const std::array<Corner, 4>& c, std::vector<Vec3>& out) {
 template <int D>
 std::vector<Vec3> surface_mesh(const MacGrid<D>& grid, const CellField& phi) {
   const Lattice<D> cells = grid.cell_lattice();
-  Lattice<D> cubes = cells;  // one per lower corner
-  for (int a = 0; a < D; ++a) cubes.dims[a] = std::max(cells.dims[a] - 1, 0);
+  Lattice<D> cubes = cells;  // one per lower corner (across the seam too, on a periodic axis)
+  for (int a = 0; a < D; ++a)
+    if (a != grid.periodic_axis) cubes.dims[a] = std::max(cells.dims[a] - 1, 0);
   std::vector<Vec3> out;
   constexpr int kCorners = 1 << D;
   for (std::size_t k = 0; k < cubes.size(); ++k) {

@@ -18,7 +18,7 @@ std::vector<Real> phi_at_faces(const MacGrid<D>& grid, const CellField& phi, int
     Real sum = 0;
     int count = 0;
     for (const int cell : {upper - 1, upper}) {
-      if (cell < 0 || cell >= grid.cells[axis]) continue;
+      if (axis != grid.periodic_axis && (cell < 0 || cell >= grid.cells[axis])) continue;
       c[axis] = cell;
       sum += phi[cells.index(c)];
       ++count;
