@@ -59,11 +59,6 @@ std::unique_ptr<FluidSystem> ModelRegistry::make(const io::CaseConfig& config,
                                      "and outlets",
                                      config.model_name, names_with(&ModelEntry::open_boundaries)));
       }
-      if (services.split()) {
-        throw InputError(config.file(), b.line, b.key + ".type",
-                         "open boundaries run on one rank for now; run without mpirun, or "
-                         "with -np 1");
-      }
     }
     if (config.periodic && !entry->periodic) {
       throw InputError(config.file(), config.periodic->line, config.periodic->key + ".type",

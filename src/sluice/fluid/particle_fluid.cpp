@@ -219,10 +219,6 @@ void ParticleFluid<D>::join_periodic_sides(const io::CaseConfig& config,
                                  "spacings ({} m): the lattice must repeat across the sides",
                                  "xyz"[p.axis], hi - lo, config.spacing));
   }
-  if (!config.boundaries.empty()) {
-    throw InputError(config.file(), p.line, p.key + ".type",
-                     "a particle model takes a periodic axis or inlets and outlets, not both yet");
-  }
   periodic_ = PeriodicSpan{axis, lo, hi};
   periodic_key_ = p.key;
   periodic_place_ = {config.file(), p.line};
@@ -422,13 +418,13 @@ template <int D>
 void ParticleFluid<D>::sort_by_cell() {
   if (device_) return on_device([&] { device_->sort_by_cell(); });
   keep_out_of_walls();
-  if (exchange_) exchange_->exchange(state_.particles);
-  // Split, the sort drops the ghosts of the last step and the particles sent away; with open
-  // boundaries, those that left the domain by an outlet.
+  // With open boundaries, those that left the domain by an outlet go; split (or periodic), the
+  // ghosts of the last step and the particles sent away go too (the exchange's gone()).
+  const std::vector<bool>* left_the_domain =
+      open_gone_.size() == state_.particles.size() ? &open_gone_ : nullptr;
+  if (exchange_) exchange_->exchange(state_.particles, left_the_domain);
   const std::size_t before = state_.particles.size();
-  const std::vector<bool>* gone = exchange_                     ? &exchange_->gone()
-                                  : open_gone_.size() == before ? &open_gone_
-                                                                : nullptr;
+  const std::vector<bool>* gone = exchange_ ? &exchange_->gone() : left_the_domain;
   state_.cells.sort(state_.particles.position, order_, gone);
   state_.particles.reorder(order_);
   open_gone_.clear();
@@ -438,7 +434,17 @@ void ParticleFluid<D>::sort_by_cell() {
 template <int D>
 void ParticleFluid<D>::pass_open_boundaries(const StepClock& clock) {
   if (open_.empty()) return;
-  open_.advance(state_.particles, open_zone_, clock.time, clock.dt, open_gone_, hand_over_);
+  auto& ps = state_.particles;
+  if (!exchange_) {
+    open_.advance(ps, open_zone_, clock.time, clock.dt, open_gone_, hand_over_);
+  } else {
+    // Split (or periodic): the ghosts are their owners' to move; a particle's owned kind follows
+    // its kind across a buffer's face (a copy made behind an inlet took its original's).
+    open_.advance(ps, open_zone_, clock.time, clock.dt, open_gone_, hand_over_, owned_kind_);
+    for (const auto* changed : {&hand_over_.joined, &hand_over_.left})
+      for (const std::uint32_t i : *changed)
+        ps[owned_kind_][i] = static_cast<std::int32_t>(ps.kind[i]);
+  }
   state_.fluid_count += hand_over_.joined.size();
   state_.fluid_count -= hand_over_.left.size();
   handed_over(hand_over_);

@@ -94,13 +94,15 @@ std::size_t ParticleOpenBoundaries<D>::start(ParticleSet<D>& ps,
 template <int D>
 void ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone,
                                         double time, Real dt, std::vector<bool>& gone,
-                                        BufferHandOver& hand_over) const {
+                                        BufferHandOver& hand_over,
+                                        std::optional<FieldHandle<std::int32_t>> owned) const {
   const std::size_t before = ps.size();
   gone.assign(before, false);
   hand_over.joined.clear();
   hand_over.left.clear();
   std::vector<unsigned char> copy;
   for (std::size_t i = 0; i < before; ++i) {
+    if (owned && ps[*owned][i] < 0) continue;
     const std::int32_t z = ps[zone][i];
     if (z == 0) {
       // Fluid that entered an outlet's buffer joins it, at the velocity it has.
@@ -145,14 +147,15 @@ Real ParticleOpenBoundaries<D>::outlet_pressure(const io::BoundaryConfig& side, 
 
 template <int D>
 double ParticleOpenBoundaries<D>::outflow(const ParticleSet<D>& ps, FieldHandle<std::int32_t> zone,
-                                          std::size_t index) const {
+                                          std::size_t index,
+                                          std::optional<FieldHandle<std::int32_t>> owned) const {
   const io::BoundaryConfig& side = sides_[index];
   const int a = model_axis(side);
   const auto& in = ps[zone];
   const auto own = static_cast<std::int32_t>(index + 1);
   double sum = 0;
   for (std::size_t i = 0; i < ps.size(); ++i) {
-    if (!ps.is_fluid(i) && in[i] != own) continue;
+    if ((!ps.is_fluid(i) && in[i] != own) || (owned && ps[*owned][i] < 0)) continue;
     const Real hat = 1 - std::abs(beyond_inner_face(side, ps.position[i])) / spacing_;
     if (hat <= 0) continue;
     sum += ps.mass[i] / density_ * outward(side) * ps.velocity[i][a] * hat / spacing_;

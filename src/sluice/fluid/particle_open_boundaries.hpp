@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -56,9 +57,11 @@ class ParticleOpenBoundaries {
   // particles across the buffers' inner faces over (fluid <-> buffer), fills the inlets' buffers
   // behind those that left them, and marks in `gone` (sized to the set) the outlets' particles
   // that left the domain; `hand_over` lists who changed sides (the model sets up its own state
-  // of them).
+  // of them). With `owned` (a field of the set: -1 for a ghost, another rank's particle or a
+  // periodic image), the ghosts are left alone: their owners move them.
   void advance(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone, double time, Real dt,
-               std::vector<bool>& gone, BufferHandOver& hand_over) const;
+               std::vector<bool>& gone, BufferHandOver& hand_over,
+               std::optional<FieldHandle<std::int32_t>> owned = std::nullopt) const;
   // After the model's boundary state: each outlet buffer particle's pressure, where the outlet
   // prescribes it, and the density `density_of(p)` of the model's equation of state. A model
   // whose free surface holds its pressure at the surface particles' centres (MPS) measures the
@@ -80,8 +83,10 @@ class ParticleOpenBoundaries {
   // The volume flux out of the domain through the inner face of boundary `index`'s buffer
   // (inflow negative) [m^3/s; 2D: m^2/s]: the fluid's and the buffer's particles' volumes
   // (m / rho0) times their speed across the face, each spread over a spacing on either side of
-  // it by a hat function (which sums to one over a lattice's rows).
-  double outflow(const ParticleSet<D>& ps, FieldHandle<std::int32_t> zone, std::size_t index) const;
+  // it by a hat function (which sums to one over a lattice's rows). With `owned`, over the
+  // particles this rank owns.
+  double outflow(const ParticleSet<D>& ps, FieldHandle<std::int32_t> zone, std::size_t index,
+                 std::optional<FieldHandle<std::int32_t>> owned = std::nullopt) const;
 
  private:
   // The side's axis in the model's coordinates (2D: x 0, z 1).

@@ -35,7 +35,8 @@ template <int D>
 double ParticleFluid<D>::boundary_flux(std::size_t index) const {
   if (open_.empty()) return FluidObservation::boundary_flux(index);
   refresh_host();
-  return open_.outflow(state_.particles, open_zone_, index);
+  if (!exchange_) return open_.outflow(state_.particles, open_zone_, index);
+  return ranks_.sum(open_.outflow(state_.particles, open_zone_, index, owned_kind_));
 }
 
 // Height above the domain floor of the highest point of the gauge line where the fluid's

@@ -104,9 +104,12 @@ class ParticleExchange {
   // left this rank's region and takes in what entered it, and takes the ghosts anew. The ghosts of
   // the last exchange and the particles sent away stay in the set, marked in gone(): the neighbour
   // sort that follows drops them (one copy of the set, not two).
-  void exchange(ParticleSet<D>& ps) {
+  // With `also_gone` (sized to the set), the particles it marks go too (those that left the
+  // domain through an outlet), neither sent nor copied.
+  void exchange(ParticleSet<D>& ps, const std::vector<bool>* also_gone = nullptr) {
     ++totals_.exchanges;
     gone_.assign(ps.size(), false);
+    if (also_gone != nullptr && also_gone->size() == ps.size()) gone_ = *also_gone;
     add_seconds(totals_.wait_seconds, [&] { ranks_.barrier(); });
     if (++since_balance_ >= balance_.interval) {
       since_balance_ = 0;
@@ -222,7 +225,10 @@ class ParticleExchange {
         gone_[i] = true;
         continue;
       }
-      if (periodic_ && owned[i] == static_cast<std::int32_t>(ParticleKind::kFluid))
+      if (gone_[i]) continue;
+      // Every particle but a body's (the bodies place theirs) comes round: fluid, and an open
+      // boundary's buffer particles beside the periodic sides.
+      if (periodic_ && owned[i] != static_cast<std::int32_t>(ParticleKind::kBody))
         wrap(ps.position[i]);
       const int r = regions_.owner(ps.position[i]);
       if (r == ranks_.rank()) continue;

@@ -380,9 +380,7 @@ class MpsModel final : public ParticleFluid<D> {
     } else {
       solved = equation_.solve(this->state().particles.pressure);
       this->refresh_ghosts(this->state().particles.pressure);  // split: the owners solved them
-      // Its free surface's pressure vanishes at the surface particles' centres, dx/2 below
-      // the water's surface: so does an outlet's hydrostatic pressure.
-      this->prescribe_outlet_pressure([&](Real) { return density_; }, -0.5 * this->state().spacing);
+      prescribe_outlets();
     }
     const PressureEquationReport& r = last_solve();
     ++solves_;
@@ -409,8 +407,16 @@ class MpsModel final : public ParticleFluid<D> {
       exec::Default::for_each(this->state().particles.size(),
                               MpsStateEquation<D>{arrays(), stiffness, lattice_.n0});
       this->refresh_ghosts(this->state().particles.pressure);  // split: as the owners have it
+      prescribe_outlets();
     }
     clamp_negative();
+  }
+
+  // An outlet's pressure, where it prescribes one. Its free surface's pressure vanishes at the
+  // surface particles' centres, dx/2 below the water's surface: so does an outlet's hydrostatic
+  // pressure.
+  void prescribe_outlets() {
+    this->prescribe_outlet_pressure([&](Real) { return density_; }, -0.5 * this->state().spacing);
   }
 
   void clamp_negative() {
