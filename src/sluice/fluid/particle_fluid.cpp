@@ -446,7 +446,7 @@ void ParticleFluid<D>::pass_open_boundaries(const StepClock& clock) {
         ps[owned_kind_][i] = static_cast<std::int32_t>(ps.kind[i]);
   }
   state_.fluid_count += hand_over_.joined.size();
-  state_.fluid_count -= hand_over_.left.size();
+  state_.fluid_count -= hand_over_.left.size() + hand_over_.dropped.size();
   handed_over(hand_over_);
 }
 

@@ -100,14 +100,21 @@ void ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int
   gone.assign(before, false);
   hand_over.joined.clear();
   hand_over.left.clear();
+  hand_over.dropped.clear();
   std::vector<unsigned char> copy;
   for (std::size_t i = 0; i < before; ++i) {
     if (owned && ps[*owned][i] < 0) continue;
     const std::int32_t z = ps[zone][i];
     if (z == 0) {
-      // Fluid that entered an outlet's buffer joins it, at the velocity it has.
-      if (ps.is_fluid(i) && join_outlet(ps, zone, i))
+      if (!ps.is_fluid(i)) continue;
+      // Fluid that entered an outlet's buffer joins it, at the velocity it has; fluid that
+      // drifted back into an inlet's goes.
+      if (join_outlet(ps, zone, i)) {
         hand_over.left.push_back(static_cast<std::uint32_t>(i));
+      } else if (in_inlet_buffer(ps.position[i])) {
+        gone[i] = true;
+        hand_over.dropped.push_back(static_cast<std::uint32_t>(i));
+      }
       continue;
     }
     const std::size_t b = static_cast<std::size_t>(z - 1);

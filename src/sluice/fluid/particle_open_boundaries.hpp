@@ -5,7 +5,8 @@
 // buffer moves itself.
 // - Inlet: its particles move into the domain at the inflow's velocity; one that crosses the
 //   buffer's inner face becomes fluid, and a copy of it one buffer's depth back takes its place,
-//   so that the buffer stays full and the mass flux in is the buffer's, without a jump.
+//   so that the buffer stays full and the mass flux in is the buffer's, without a jump. Fluid
+//   that drifts back into the buffer (beside a no-slip wall, where the inflow is slow) goes.
 // - Outlet: fluid that enters the buffer becomes a buffer particle that moves on at the velocity
 //   it had (its pressure prescribed, where the case gives a pressure or a depth, else the
 //   fluid's); it goes when it leaves the domain, and becomes fluid again if it turns back.
@@ -26,9 +27,11 @@ namespace sluice {
 
 // What a pass handed over between the fluid and the buffers (indices into the particle set
 // before the neighbour sort): the particles that became fluid (an inlet's that crossed into the
-// domain, an outlet's that turned back), and the fluid that entered an outlet's buffer.
+// domain, an outlet's that turned back), the fluid that entered an outlet's buffer, and the
+// fluid that drifted back into an inlet's buffer, which goes (as in Tafuni et al.'s buffers: the
+// inflow there is the buffer's alone).
 struct BufferHandOver {
-  std::vector<std::uint32_t> joined, left;
+  std::vector<std::uint32_t> joined, left, dropped;
 };
 
 template <int D>

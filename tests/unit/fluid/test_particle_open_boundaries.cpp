@@ -1,6 +1,7 @@
 // The particle models' open boundaries (fluid/particle_open_boundaries.hpp): an inlet's buffer
 // moves at the inflow's velocity and refills itself behind each particle that leaves it, an
-// outlet's buffer takes the fluid that enters it and drops what leaves the domain, the flux
+// outlet's buffer takes the fluid that enters it and drops what leaves the domain, fluid that
+// drifts back into an inlet's buffer goes, the flux
 // estimate reads a moving lattice's flux exactly, and an outlet's pressure is hydrostatic below
 // its depth.
 #include <gtest/gtest.h>
@@ -113,6 +114,26 @@ TEST(ParticleOpenBoundaries, OutletTakesTheFluidThatEntersItAndDropsWhatLeavesTh
   EXPECT_EQ(p.set.kind[1], ParticleKind::kFluid);
   EXPECT_EQ(p.set.kind[3], ParticleKind::kFluid);
   EXPECT_EQ(p.set[p.zone][3], 0);
+}
+
+// Fluid that drifts back into an inlet's buffer (or past the side) goes; fluid before the
+// buffer's face stays, and a ghost (its owned kind -1) is left to its owner.
+TEST(ParticleOpenBoundaries, InletDropsTheFluidThatDriftsBackIntoItsBuffer) {
+  const ParticleOpenBoundaries<2> open = channel();
+  Particles p;
+  const auto owned = p.set.add_int_field({"owned_kind", "1", false});
+  p.add(0.15, 0.05, -0.1, ParticleKind::kFluid, 0);   // in the buffer: goes
+  p.add(-0.01, 0.05, -0.1, ParticleKind::kFluid, 0);  // past the side: goes
+  p.add(0.25, 0.05, -0.1, ParticleKind::kFluid, 0);   // before the face: stays
+  p.add(0.12, 0.05, -0.1, ParticleKind::kFluid, 0);   // a ghost: its owner's
+  for (std::size_t i = 0; i < 4; ++i) p.set[owned][i] = i == 3 ? -1 : 0;
+  std::vector<bool> gone;
+  BufferHandOver hand_over;
+  open.advance(p.set, p.zone, 0, 0.1, gone, hand_over, owned);
+  EXPECT_EQ(gone, (std::vector<bool>{true, true, false, false}));
+  EXPECT_EQ(hand_over.dropped, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_TRUE(hand_over.joined.empty());
+  EXPECT_TRUE(hand_over.left.empty());
 }
 
 TEST(ParticleOpenBoundaries, FluxThroughTheInnerFaceOfAMovingLatticeIsItsSpeedTimesItsDepth) {
