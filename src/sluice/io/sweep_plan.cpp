@@ -12,6 +12,18 @@ std::string trimmed(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
+// The key paths of a setting's key, joined by '+'.
+std::vector<std::string> joined_keys(const std::string& key) {
+  std::vector<std::string> keys;
+  std::size_t start = 0;
+  while (true) {
+    const auto plus = key.find('+', start);
+    keys.push_back(trimmed(key.substr(start, plus - start)));
+    if (plus == std::string::npos) return keys;
+    start = plus + 1;
+  }
+}
+
 }  // namespace
 
 SweepSetting parse_sweep_setting(const std::string& assignment) {
@@ -23,6 +35,12 @@ SweepSetting parse_sweep_setting(const std::string& assignment) {
   }
   SweepSetting setting;
   setting.key = assignment.substr(0, equals);
+  for (const std::string& key : joined_keys(setting.key)) {
+    if (trimmed(key).empty()) {
+      throw InputError("--set " + setting.key, 0, setting.key,
+                       "an empty key path among those joined by '+'");
+    }
+  }
   const std::string text = assignment.substr(equals + 1);
   int depth = 0;
   std::string value;
@@ -55,7 +73,7 @@ std::vector<SweepRun> sweep_runs(const std::vector<SweepSetting>& settings) {
     for (const SweepRun& run : runs) {
       for (const std::string& value : s.values) {
         SweepRun r = run;
-        r.overrides.push_back(s.key + "=" + value);
+        for (const std::string& key : joined_keys(s.key)) r.overrides.push_back(key + "=" + value);
         if (s.values.size() > 1) r.values.push_back(value);
         next.push_back(std::move(r));
       }

@@ -1,6 +1,8 @@
 // The runs of a parameter sweep (`sluice sweep CASE --set KEY=V1,V2,...`): each --set with
 // several values is an axis, one with a single value is applied to every run, and the runs are
-// every combination of the axes' values.
+// every combination of the axes' values. A --set of keys joined by '+' (KEY1+KEY2=V1,V2) sets
+// each value at every one of them: one axis for quantities the case states in several places
+// (a channel's depth: its block's top, its inlet's and its outlet's depth).
 #pragma once
 
 #include <string>
@@ -9,7 +11,7 @@
 namespace sluice::io {
 
 struct SweepSetting {
-  std::string key;                  // the key path, as for --set
+  std::string key;                  // the key path, as for --set, or several joined by '+'
   std::vector<std::string> values;  // each a YAML value, as --set takes it
 };
 
@@ -20,7 +22,7 @@ struct SweepRun {
 
 // Splits "KEY=V1,V2,..." at the commas outside brackets and braces, so that
 // `fluid.blocks.0.max=[0.5, 1],[0.6, 1]` gives two values. Throws InputError naming the
-// --set on a missing key or an empty value.
+// --set on a missing key, an empty key between '+', or an empty value.
 SweepSetting parse_sweep_setting(const std::string& assignment);
 
 // Every combination, the last axis varying fastest.

@@ -45,6 +45,27 @@ TEST(SweepPlan, EveryCombinationLastAxisFastest) {
   EXPECT_EQ(runs[5].values, (std::vector<std::string>{"2", "z"}));
 }
 
+// Keys joined by '+' are one axis: each value goes to every key.
+TEST(SweepPlan, JoinedKeysTakeEachValueTogether) {
+  const std::vector<SweepSetting> settings{
+      parse_sweep_setting("fluid.blocks.0.max.2+boundaries.0.depth=0.12,0.2"),
+      parse_sweep_setting("u=1,2")};
+  EXPECT_EQ(sweep_axes(settings),
+            (std::vector<std::string>{"fluid.blocks.0.max.2+boundaries.0.depth", "u"}));
+  const std::vector<SweepRun> runs = sweep_runs(settings);
+  ASSERT_EQ(runs.size(), 4u);
+  EXPECT_EQ(runs[2].overrides, (std::vector<std::string>{"fluid.blocks.0.max.2=0.2",
+                                                         "boundaries.0.depth=0.2", "u=1"}));
+  EXPECT_EQ(runs[2].values, (std::vector<std::string>{"0.2", "1"}));
+  try {
+    parse_sweep_setting("a++b=1,2");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--set a++b: key 'a++b': an empty key path among those joined by '+'");
+  }
+}
+
 TEST(SweepTable, OneRowPerRunMeasurementsInOrderOfFirstAppearance) {
   const std::vector<SweepResult> results{
       {{"5e3"}, "done", {{"held_back_fraction", 0.25}, {"steps", 10}}},
