@@ -435,15 +435,13 @@ template <int D>
 void ParticleFluid<D>::pass_open_boundaries(const StepClock& clock) {
   if (open_.empty()) return;
   auto& ps = state_.particles;
-  if (!exchange_) {
-    open_.advance(ps, open_zone_, clock.time, clock.dt, open_gone_, hand_over_);
-  } else {
-    // Split (or periodic): the ghosts are their owners' to move; a particle's owned kind follows
-    // its kind across a buffer's face (a copy made behind an inlet took its original's).
-    open_.advance(ps, open_zone_, clock.time, clock.dt, open_gone_, hand_over_, owned_kind_);
+  // Split (or periodic): the ghosts are their owners' to move, and a particle's owned kind
+  // follows its kind across a buffer's face (a copy made behind an inlet took its original's).
+  const auto owned = exchange_ ? std::optional(owned_kind_) : std::nullopt;
+  open_.advance(ps, open_zone_, clock.time, clock.dt, open_gone_, hand_over_, owned);
+  if (owned) {
     for (const auto* changed : {&hand_over_.joined, &hand_over_.left})
-      for (const std::uint32_t i : *changed)
-        ps[owned_kind_][i] = static_cast<std::int32_t>(ps.kind[i]);
+      for (const std::uint32_t i : *changed) ps[*owned][i] = static_cast<std::int32_t>(ps.kind[i]);
   }
   state_.fluid_count += hand_over_.joined.size();
   state_.fluid_count -= hand_over_.left.size() + hand_over_.dropped.size();

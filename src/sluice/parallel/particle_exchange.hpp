@@ -80,8 +80,8 @@ class ParticleExchange {
         owned_kind_(owned_kind),
         balance_(balance) {}
 
-  // Joins the two sides along `span.axis` (before start()): fluid particles wrap round, and
-  // those within the halo's depth of a side are copied beyond the other.
+  // Joins the two sides along `span.axis` (before start()): particles (a body's excepted) wrap
+  // round, and those within the halo's depth of a side are copied beyond the other.
   void join_sides(const PeriodicSpan& span) { periodic_ = span; }
 
   // From the whole case, which every rank built alike: keeps this rank's region and takes its
@@ -310,7 +310,7 @@ class ParticleExchange {
     return true;
   }
 
-  // A fluid particle past a periodic side, brought back through the other.
+  // A particle past a periodic side, brought back through the other.
   void wrap(Vec<D>& x) const {
     Real& c = x[periodic_->axis];
     if (c >= periodic_->hi) c -= periodic_->length();
