@@ -33,8 +33,8 @@ TEST(ParticleExchange, OneRankKeepsEveryParticleAndTakesNoGhost) {
 }
 
 // A periodic axis on one rank: particles within the halo's depth of a side come back, shifted
-// by the span, beyond the other as ghosts (every field copied, the position shifted); a fluid
-// particle that left through a side comes in through the other, a wall particle never moves;
+// by the span, beyond the other as ghosts (every field copied, the position shifted); a
+// particle that left through a side comes in through the other, a body's excepted;
 // refresh() brings the ghosts' fields up to date, their positions shifted again.
 TEST(ParticleExchange, APeriodicAxisWrapsFluidAndCopiesEachSideBeyondTheOther) {
   ParticleSet<2> ps;
@@ -48,14 +48,16 @@ TEST(ParticleExchange, APeriodicAxisWrapsFluidAndCopiesEachSideBeyondTheOther) {
   }
   ps.add(Vec<2>(0.15, -0.1), Vec<2>::Zero(), 1000, 1, ParticleKind::kWall);
   ps[tag].back() = -1;
+  ps.add(Vec<2>(0.5, 0.6), Vec<2>::Zero(), 1000, 1, ParticleKind::kBody);
+  ps[tag].back() = -2;
   ParticleExchange<2> exchange(Communicator::alone(), Decomposition(), 0.2, owned);
   exchange.join_sides(PeriodicSpan{0, 0.0, 1.0});
   exchange.start(ps);
   // The two fluid particles near a side and the wall particle, each imaged once.
-  ASSERT_EQ(ps.size(), 7u);
+  ASSERT_EQ(ps.size(), 8u);
   EXPECT_EQ(exchange.last().ghosts, 3u);
   const auto ghost_at = [&](double x) {
-    for (std::size_t i = 4; i < ps.size(); ++i) {
+    for (std::size_t i = 5; i < ps.size(); ++i) {
       if (std::abs(ps.position[i][0] - x) < 1e-12) return static_cast<int>(i);
     }
     return -1;
@@ -78,14 +80,17 @@ TEST(ParticleExchange, APeriodicAxisWrapsFluidAndCopiesEachSideBeyondTheOther) {
   EXPECT_NEAR(ps.position[static_cast<std::size_t>(upper_image)][0], 1.07, 1e-12);
   EXPECT_NEAR(ps.position[static_cast<std::size_t>(lower_image)][0], -0.05, 1e-12);
 
-  // The particle near the upper side moves past it; the wall particle is moved past the lower
-  // side (as no stage would): the first wraps round, the second stays where it is.
+  // The particle near the upper side moves past it, the wall particle (an open boundary's
+  // buffer particle, say) past the lower one, and the body's particle past the upper one: the
+  // first two wrap round; a body's particle stays where its body puts it.
   ps.position[2][0] = 1.02;
   ps.position[3][0] = -0.01;
+  ps.position[4][0] = 1.01;
   exchange.exchange(ps);
   EXPECT_NEAR(ps.position[2][0], 0.02, 1e-12);
-  EXPECT_EQ(ps.position[3][0], -0.01);
-  for (std::size_t i = 4; i < 7; ++i) EXPECT_TRUE(exchange.gone()[i]);  // last exchange's ghosts
+  EXPECT_NEAR(ps.position[3][0], 0.99, 1e-12);
+  EXPECT_EQ(ps.position[4][0], 1.01);
+  for (std::size_t i = 5; i < 8; ++i) EXPECT_TRUE(exchange.gone()[i]);  // last exchange's ghosts
 }
 
 TEST(Communicator, AProcessAloneIsItsOwnAnswer) {
