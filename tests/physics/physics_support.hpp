@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "sluice/fluid/fluid_view.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/simulation.hpp"
 
@@ -35,6 +36,27 @@ inline double interpolate(const std::vector<double>& t, const std::vector<double
   if (at >= t.back()) return v.back();
   const auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
   return v[k - 1] + (at - t[k - 1]) / (t[k] - t[k - 1]) * (v[k] - v[k - 1]);
+}
+
+// Runs until `end` and returns the time mean, over (from, end], of the volume flux into the
+// domain through open boundary `boundary` (its flux probe's reading at each step).
+template <int D>
+double mean_inflow(Simulation<D>& sim, std::size_t boundary, double from, double end) {
+  const FluidObservation& fluid = sim.fluid().observation();
+  double in = 0, span = 0;
+  run_until(sim, end, [&](const StepClock& c) {
+    if (c.time <= from) return;
+    in -= c.dt * fluid.boundary_flux(boundary);
+    span += c.dt;
+  });
+  return in / span;
+}
+
+// A field of a fluid's view (its points', or its cells') by name; null where it has none.
+inline const FieldView* field_named(const std::vector<FieldView>& fields, const std::string& name) {
+  for (const FieldView& field : fields)
+    if (field.name() == name) return &field;
+  return nullptr;
 }
 
 // What `run()` returns on one OpenMP thread and then on two (the thread count restored), for

@@ -51,12 +51,8 @@ FlowFigures run_poiseuille(const std::vector<std::string>& overrides) {
     run_until(sim, times[k], [](const StepClock&) {});
     const FluidView view = sim.fluid().observation().view();
     const auto x = view.positions.reals();
-    std::span<const double> velocity;
-    std::span<const std::int32_t> kind;
-    for (const FieldView& field : view.fields) {
-      if (field.name() == "velocity") velocity = field.reals();
-      if (field.name() == "kind") kind = field.integers();
-    }
+    const auto velocity = testing::field_named(view.fields, "velocity")->reals();
+    const auto kind = testing::field_named(view.fields, "kind")->integers();
     double square = 0, sum = 0, series_sum = 0, ends = 0, middle = 0;
     std::size_t n = 0, n_ends = 0;
     for (std::size_t i = 0; i < kind.size(); ++i) {
@@ -141,21 +137,11 @@ TEST(Periodic, AcrossTheWidthOfAnOpenChannel) {
        "boundaries=[{name: inflow, type: inlet, side: x-, mean_speed: 0.3, depth: 0.3}, "
        "{name: outflow, type: outlet, side: x+, depth: 0.3}, {type: periodic, axis: y}]",
        "probes.2.point=[1.0, 0.35, 0]"}));
-  const FluidObservation& fluid = sim.fluid().observation();
-  double in = 0, span = 0;
-  run_until(sim, 2.0, [&](const StepClock& c) {
-    if (c.time <= 0.5) return;
-    in -= c.dt * fluid.boundary_flux(0);
-    span += c.dt;
-  });
-  const FluidView view = fluid.view();
+  const double in = testing::mean_inflow(sim, 0, 0.5, 2.0);
+  const FluidView view = sim.fluid().observation().view();
   const auto x = view.positions.reals();
-  std::span<const double> velocity;
-  std::span<const std::int32_t> kind;
-  for (const FieldView& field : view.fields) {
-    if (field.name() == "velocity") velocity = field.reals();
-    if (field.name() == "kind") kind = field.integers();
-  }
+  const auto velocity = testing::field_named(view.fields, "velocity")->reals();
+  const auto kind = testing::field_named(view.fields, "kind")->integers();
   double near = 0, middle = 0;
   int n_near = 0, n_middle = 0;
   for (std::size_t i = 0; i < kind.size(); ++i) {
@@ -169,7 +155,7 @@ TEST(Periodic, AcrossTheWidthOfAnOpenChannel) {
       ++n_middle;
     }
   }
-  const double inflow = 100 * (in / span / (0.3 * 0.7 * 0.3) - 1);
+  const double inflow = 100 * (in / (0.3 * 0.7 * 0.3) - 1);
   const double sides = 100 * ((near / n_near) / (middle / n_middle) - 1);
   std::printf("periodic open channel: inflow %+.4f %%, sides from middle %+.4f %%\n", inflow,
               sides);
@@ -194,9 +180,7 @@ TEST(Periodic, MacPoiseuilleFlowFollowsTheSeriesSolution) {
     const FluidView view = sim.fluid().observation().view();
     ASSERT_TRUE(view.cells.has_value());
     const FluidView::Cells& cells = *view.cells;
-    std::span<const double> velocity;
-    for (const FieldView& field : cells.fields)
-      if (field.name() == "velocity") velocity = field.reals();
+    const auto velocity = testing::field_named(cells.fields, "velocity")->reals();
     const int nx = cells.count[0], nz = cells.count[2];
     double square = 0, side = 0, all = 0;
     for (int j = 0; j < nz; ++j) {
