@@ -35,12 +35,13 @@ struct Lattice {
     for (int a = 0; a < D; ++a) n *= static_cast<std::size_t>(dims[a]);
     return n;
   }
-  std::size_t index(const GridIndex<D>& c) const {
-    std::size_t k = 0;
-    for (int a = D - 1; a >= 0; --a) {
-      const int ca = a == wrap_axis ? ((c[a] % dims[a]) + dims[a]) % dims[a] : c[a];
-      k = k * static_cast<std::size_t>(dims[a]) + static_cast<std::size_t>(ca);
+  std::size_t index(GridIndex<D> c) const {
+    if (wrap_axis >= 0) {
+      const int n = dims[wrap_axis];
+      c[wrap_axis] = (c[wrap_axis] % n + n) % n;
     }
+    std::size_t k = 0;
+    for (int a = D - 1; a >= 0; --a) k = k * static_cast<std::size_t>(dims[a]) + c[a];
     return k;
   }
   GridIndex<D> coordinates(std::size_t k) const {
