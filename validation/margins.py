@@ -77,6 +77,8 @@ CHECKS = [
      "`cases/wave_flume_2d.yaml`", r"^Waves\."),
     ("F9 an open channel between an inlet and an outlet, `wcsph`",
      "`cases/open_channel_2d.yaml`", r"^OpenChannel\."),
+    ("F10 plane Poiseuille flow across a periodic axis (Morris et al. 1997), every model that "
+     "has one; a periodic open channel", "`cases/poiseuille_2d.yaml`", r"^Periodic\."),
 ]
 
 BUILDS = ("release", "baseline")
