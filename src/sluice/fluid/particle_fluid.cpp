@@ -330,7 +330,9 @@ void ParticleFluid<D>::gather_piece(StateArchive& a) {
   std::vector<std::uint32_t> own;
   const auto& owned = piece[owned_kind_];
   for (std::size_t i = 0; i < piece.size(); ++i) {
-    if (written_ranks_ == 1 || owned[i] >= 0) own.push_back(static_cast<std::uint32_t>(i));
+    // A ghost's owned kind is -1 (another rank's particle, or a periodic image, which a
+    // one-rank periodic run keeps too); on one rank without either it is never set, 0.
+    if (owned[i] >= 0) own.push_back(static_cast<std::uint32_t>(i));
   }
   std::vector<unsigned char> bytes;
   piece.pack(own, bytes);

@@ -152,6 +152,12 @@ void check_periodic(const CaseConfig& c) {
                                    b.side_name(), p.key));
     }
   }
+  if (!c.bodies.empty()) {
+    // A body near a side would need its own image beyond the other (the grid's solid faces,
+    // the particle models' body points) and to be carried round: neither is built.
+    throw InputError(c.file(), p.line, p.key + ".type",
+                     "a case with a periodic axis has no bodies yet");
+  }
   const double lo = c.domain.min[p.axis], hi = c.domain.max[p.axis];
   for (std::size_t w = 0; w < c.walls.size(); ++w) {
     const WallConfig& wall = c.walls[w];

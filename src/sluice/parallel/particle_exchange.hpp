@@ -315,6 +315,7 @@ class ParticleExchange {
     Real& c = x[periodic_->axis];
     if (c >= periodic_->hi) c -= periodic_->length();
     if (c < periodic_->lo) c += periodic_->length();
+    if (c >= periodic_->hi) c = periodic_->lo;  // rounding put a point just below lo on hi
   }
 
   // Appends to the set the copies of the other ranks' particles within the halo's depth, and

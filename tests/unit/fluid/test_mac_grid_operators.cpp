@@ -36,8 +36,6 @@ TEST(MacLattice, SamplesLinearFieldsExactlyAndExtrapolatesHalfACell) {
   EXPECT_NEAR(cells.sample(values, floor), field(Vec<2>(0.5, 0.0625)), 1e-12);
 }
 
-// A smooth bump carried across the grid by a uniform flow and back: MacCormack's error is at
-// most a third of plain semi-Lagrangian's, and it makes no new extremum.
 // A periodic axis: as many faces as cells along it, indices and samples read across the seam
 // (a field periodic on the grid is sampled exactly as its linear interpolation across it), and
 // a point past a side comes back through the other.
@@ -68,6 +66,8 @@ TEST(MacLattice, APeriodicAxisRepeatsEveryLattice) {
   EXPECT_DOUBLE_EQ(grid.wrapped(Vec<2>(-0.1, 0.3))[1], 0.3);
 }
 
+// A smooth bump carried across the grid by a uniform flow and back: MacCormack's error is at
+// most a third of plain semi-Lagrangian's, and it makes no new extremum.
 TEST(MacAdvection, MacCormackBeatsSemiLagrangianWithoutNewExtrema) {
   const MacGrid<2> grid = unit_square(64);
   const Lattice<2> cells = grid.cell_lattice();
