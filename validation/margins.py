@@ -74,7 +74,9 @@ CHECKS = [
     ("F7 flow past a cylinder in a channel (Schäfer & Turek 1996, 2D-1), `mac`",
      "`cases/cylinder_channel_2d.yaml`", r"^OpenBoundaries\."),
     ("F8 waves from a piston (Biésel, Madsen) and a damping zone, `mac`",
-     "`cases/wave_flume_2d.yaml`", r"^Waves\."),
+     "`cases/wave_flume_2d.yaml`", r"^Waves\.Piston"),
+    ("F11 a box floating in regular waves, held to heave, `mac`",
+     "`cases/floating_box_waves_2d.yaml`", r"^Waves\.FloatingBox"),
     ("F9 an open channel between an inlet and an outlet, `wcsph`",
      "`cases/open_channel_2d.yaml`", r"^OpenChannel\."),
     ("F10 plane Poiseuille flow across a periodic axis (Morris et al. 1997), every model that "

@@ -119,9 +119,10 @@ def keep_results(out, name, files=("probes.csv",)):
     for filename in files:
         path = os.path.join(out, filename)
         if os.path.exists(path):
-            os.makedirs(kept, exist_ok=True)
+            target = os.path.join(kept, filename + ".gz")  # filename may name a folder too
+            os.makedirs(os.path.dirname(target), exist_ok=True)
             # mtime 0: the same file gives the same bytes, so an unchanged result is no change.
-            with open(path, "rb") as f, open(os.path.join(kept, filename + ".gz"), "wb") as g:
+            with open(path, "rb") as f, open(target, "wb") as g:
                 g.write(gzip.compress(f.read(), mtime=0))
     statistics = run_statistics(out)
     if statistics is not None:

@@ -106,6 +106,11 @@ const ResumeCase kCases[] = {
      "floating_box_2d.yaml",
      0.2,
      {"model={name: penalty-sph, device: emulated}"}},
+    // A paddle's active absorption: what it has added to the signal, written and read back.
+    {"mac_absorbing_paddle",
+     "paddle_absorption_2d.yaml",
+     1.0,
+     {"spacing=0.04", "output_interval=0.25"}},
     {"wcsph_3d_cubes", "dam_break_cubes_3.yaml", 0.04, {"spacing=0.05"}},
     {"bodies_alone_joints", "pendulum.yaml", 0.4, {}},
     {"bodies_alone_complementarity", "sphere_stack.yaml", 0.4, {}},

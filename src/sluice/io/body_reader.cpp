@@ -87,6 +87,14 @@ WavemakerConfig read_wavemaker(MapReader& map, const BodyContext& context) {
   }
   const double ramp = map.optional_non_negative("ramp_time", 2 * w.period);
   w.signal = waves::paddle_signal(sea, w.water_depth, hinge, context.gravity, w.order == 2, ramp);
+  w.active_absorption = map.optional<bool>("active_absorption", false);
+  if (w.active_absorption) {
+    // The transfer function read backwards at the (peak) frequency: the paddle velocity that
+    // makes a wave of unit elevation, omega / (H/S); sqrt(g/h) in shallow water.
+    const double omega = 2 * std::numbers::pi / w.period;
+    const double k = waves::wavenumber(omega, w.water_depth, context.gravity);
+    w.absorption_gain = omega / waves::height_over_stroke(k, w.water_depth, hinge);
+  }
   return w;
 }
 
@@ -290,6 +298,10 @@ BodyConfig read_body(MapReader& map, std::size_t index, const BodyContext& conte
       map.fail("prescribed", "missing required key (motion is prescribed)");
     MapReader prescribed = map.map("prescribed");
     b.prescribed = read_prescribed(prescribed, context);
+    if (b.prescribed.wavemaker.active_absorption && b.shape != BodyShape::kBox) {
+      prescribed.fail("active_absorption",
+                      "needs a box paddle: the water is measured a little before its face");
+    }
   } else {
     map.fail_choice("motion", "motion", motion, {"free", "fixed", "prescribed"});
   }

@@ -25,9 +25,10 @@ namespace {
 // A paddle's pose: a piston moved along x by the signal's displacement; a flap turned about y
 // (positive turns carry its top towards +x) through atan(X / d), X the displacement at the
 // still water line, d the hinge's depth below it.
-ShapePose paddle_pose(const io::BodyConfig& body, double time) {
+ShapePose paddle_pose(const io::BodyConfig& body, double time, const PaddleCorrection& correction) {
   const io::WavemakerConfig& w = body.prescribed.wavemaker;
-  const double x = w.signal.displacement(time), v = w.signal.velocity(time);
+  const double x = w.signal.displacement(time) + correction.displacement;
+  const double v = w.signal.velocity(time) + correction.velocity;
   const Eigen::Quaterniond rest = rotation_from_angles(body.rotation);
   if (w.paddle == io::PaddleKind::kPiston) {
     return {body.position + x * Vec3::UnitX(), rest, v * Vec3::UnitX(), Vec3::Zero()};
@@ -42,9 +43,10 @@ ShapePose paddle_pose(const io::BodyConfig& body, double time) {
 
 }  // namespace
 
-ShapePose prescribed_pose(const io::BodyConfig& body, double time) {
+ShapePose prescribed_pose(const io::BodyConfig& body, double time,
+                          const PaddleCorrection& correction) {
   const io::PrescribedConfig& p = body.prescribed;
-  if (p.kind == io::PrescribedKind::kWavemaker) return paddle_pose(body, time);
+  if (p.kind == io::PrescribedKind::kWavemaker) return paddle_pose(body, time, correction);
   Vec3 position = body.position, angles = body.rotation;
   Vec3 velocity = Vec3::Zero(), rates = Vec3::Zero();
   switch (p.kind) {

@@ -21,9 +21,18 @@ Eigen::Quaterniond rotation_from_angles(const Vec3& angles);
 // The world angular velocity of rotation_from_angles(angles) while the angles change at `rates`.
 Vec3 angular_velocity_from_rates(const Vec3& angles, const Vec3& rates);
 
+// What a wave paddle's active absorption adds to its signal's displacement at the still water
+// line [m] and to its velocity there [m/s] (sim/paddle_absorber.hpp).
+struct PaddleCorrection {
+  double displacement = 0;
+  double velocity = 0;
+};
+
 // The pose at `time` of a body given by `body` (its motion must be prescribed): the angles
 // move with time, and the angular velocity is that of the turning they make. A table is
-// interpolated linearly and held at its first and last rows.
-ShapePose prescribed_pose(const io::BodyConfig& body, double time);
+// interpolated linearly and held at its first and last rows. A wavemaker's displacement is
+// its signal's plus `correction`.
+ShapePose prescribed_pose(const io::BodyConfig& body, double time,
+                          const PaddleCorrection& correction = {});
 
 }  // namespace sluice

@@ -89,8 +89,17 @@ RigidBodies::RigidBodies(const io::CaseConfig& config)
     centre_of_mass_.push_back(com);
     if (c.motion == io::BodyMotion::kPrescribed) {
       body.fixed = true;
-      body.prescribed = [c, com, principal_rotation](double time, RigidBody& state) {
-        place(state, prescribed_pose(c, time), com, principal_rotation);
+      const PaddleAbsorber* absorber = nullptr;
+      if (c.prescribed.kind == io::PrescribedKind::kWavemaker &&
+          c.prescribed.wavemaker.active_absorption) {
+        // Two spacings before the face: clear of the cells or particles the paddle's edge cuts.
+        absorbers_.push_back(
+            std::make_unique<PaddleAbsorber>(configs_[b], config.domain.min[2], 2 * dx));
+        absorber = absorbers_.back().get();
+      }
+      body.prescribed = [c, com, principal_rotation, absorber](double time, RigidBody& state) {
+        const PaddleCorrection correction = absorber ? absorber->at(time) : PaddleCorrection{};
+        place(state, prescribed_pose(c, time, correction), com, principal_rotation);
       };
       body.prescribed(0.0, body.state);
     } else {

@@ -10,6 +10,7 @@
 #include "sluice/contact/multibody_system.hpp"
 #include "sluice/coupling/body_geometry.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/sim/paddle_absorber.hpp"
 
 namespace sluice {
 
@@ -31,10 +32,16 @@ class RigidBodies final : public BodyGeometry {
   }
 
   long substeps() const { return system_.substeps_taken(); }
-  // Checkpoints: the bodies' state and their contacts (shapes and joints come from the case).
+  // Checkpoints: the bodies' state and their contacts (shapes and joints come from the case),
+  // and the paddles' absorption.
   void archive_state(StateArchive& a) {
     a.section("bodies");
     system_.archive_state(a);
+    for (auto& absorber : absorbers_) a(*absorber);
+  }
+  // Paddles with active absorption read the water before them at `time`, the start of a step.
+  void absorb_waves(double time, const FluidObservation& fluid) {
+    for (auto& absorber : absorbers_) absorber->measure(time, fluid);
   }
 
   // BodyGeometry
@@ -71,6 +78,8 @@ class RigidBodies final : public BodyGeometry {
   std::vector<Eigen::Quaterniond> principal_;  // per body: principal axes -> shape axes
   std::vector<Eigen::Matrix3d> axes_;          // the same as a matrix (its columns)
   std::vector<Vec3> centre_of_mass_;           // in the shape's frame
+  // Paddles' active absorption; the bodies' motion closures keep pointers to them.
+  std::vector<std::unique_ptr<PaddleAbsorber>> absorbers_;
 };
 
 }  // namespace sluice

@@ -59,6 +59,7 @@ void Simulation<D>::step(double until) {
   const double remaining = until - clock_.time;
   if (remaining < 1.5 * dt) dt = remaining <= dt * (1 + 1e-9) ? remaining : 0.5 * remaining;
   clock_.dt = dt;
+  if (has_model()) bodies_->absorb_waves(clock_.time, fluid_->observation());
   for (std::size_t k = 0; k < stages_.size(); ++k) {
     timers_.time(slots_[k], [&] { stages_[k]->run(clock_); });
   }

@@ -28,4 +28,9 @@ double breaking_height(double k, double depth) {
   return 0.142 * std::tanh(k * depth) * 2 * std::numbers::pi / k;
 }
 
+double stokes_second_harmonic(double amplitude, double k, double depth) {
+  const double kh = k * depth, s = std::sinh(kh);
+  return k * amplitude * amplitude / 4 * std::cosh(kh) * (2 + std::cosh(2 * kh)) / (s * s * s);
+}
+
 }  // namespace sluice::waves

@@ -15,4 +15,9 @@ double angular_frequency(double k, double depth, double gravity);
 // H_max / L = 0.142 tanh(k h).
 double breaking_height(double k, double depth);
 
+// The amplitude of the second harmonic bound to a regular wave of amplitude `amplitude`
+// (Stokes's second order, e.g. Dean & Dalrymple 1991, ch. 11):
+//   eta_2 = (k a^2 / 4) cosh kh (2 + cosh 2kh) / sinh^3 kh  cos 2(kx - omega t).
+double stokes_second_harmonic(double amplitude, double k, double depth);
+
 }  // namespace sluice::waves

@@ -40,6 +40,12 @@ double PaddleSignal::velocity(double time) const {
   return r.value * v + r.rate * x;
 }
 
+double PaddleSignal::elevation(double time) const {
+  double eta = 0;
+  for (const auto& p : surface) eta += p.amplitude * std::cos(p.omega * time + p.phase);
+  return ramp_at(time, ramp_time).value * eta;
+}
+
 PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth,
                            double hinge_depth, double gravity, bool second_order,
                            double ramp_time) {
@@ -49,9 +55,12 @@ PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth
     const double k = wavenumber(w.omega, depth, gravity);
     signal.parts.push_back(
         {w.amplitude / height_over_stroke(k, depth, hinge_depth), w.omega, w.phase});
+    signal.surface.push_back({w.amplitude, w.omega, w.phase});
     if (second_order) {
       signal.parts.push_back(
           {madsen_second_harmonic(2 * w.amplitude, k, depth), 2 * w.omega, 2 * w.phase});
+      signal.surface.push_back(
+          {stokes_second_harmonic(w.amplitude, k, depth), 2 * w.omega, 2 * w.phase});
     }
   }
   return signal;

@@ -17,12 +17,17 @@ struct StrokeComponent {
 
 struct PaddleSignal {
   std::vector<StrokeComponent> parts;
+  // The sea it makes at the paddle's rest position, each part's elevation amplitude *
+  // cos(omega t + phase) [m] (ramped as the displacement is): what active absorption takes
+  // from the water it measures there to find the waves coming back.
+  std::vector<StrokeComponent> surface;
   // The displacement is multiplied by (1 - cos(pi t / ramp_time)) / 2 until ramp_time, so that
   // the paddle starts at rest (no impulsive start, no drift of its mean position).
   double ramp_time = 0;
 
   double displacement(double time) const;
   double velocity(double time) const;
+  double elevation(double time) const;
 };
 
 // What makes the sea `waves` (each component's elevation at the paddle's rest position,
@@ -30,7 +35,8 @@ struct PaddleSignal {
 // below the still water line (kPistonHinge: a piston): each component through the transfer
 // function at its own frequency, as (amplitude / (H/S)) sin(omega t + phase) (the paddle moves
 // forward fastest under a crest). `second_order`: add Madsen's (1971) second harmonic to each
-// component (meant for a piston making one wave train).
+// component (meant for a piston making one wave train), and to the surface the Stokes
+// second-order harmonic that the wave carries with it.
 PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth,
                            double hinge_depth, double gravity, bool second_order, double ramp_time);
 

@@ -104,6 +104,29 @@ TEST(PaddleSignal, StrokeIsTheHeightOverTheTransferFunction) {
   EXPECT_NEAR(s.velocity(0), s.parts[0].amplitude * omega, 1e-15);
 }
 
+TEST(PaddleSignal, ElevationIsTheSeaAskedForWithItsBoundHarmonicAtSecondOrder) {
+  const double h = 0.5, k = 1 / h, omega = angular_frequency(k, h, kG), a = 0.02, phase = 0.4;
+  for (bool second_order : {false, true}) {
+    const PaddleSignal s = paddle_signal({{a, omega, phase}}, h, kPistonHinge, kG, second_order, 0);
+    const double bound = second_order ? stokes_second_harmonic(a, k, h) : 0;
+    for (double t : {0.0, 0.7, 3.1}) {
+      EXPECT_NEAR(s.elevation(t),
+                  a * std::cos(omega * t + phase) + bound * std::cos(2 * (omega * t + phase)),
+                  1e-15);
+    }
+  }
+  // Ramped as the displacement is: nothing at the start.
+  EXPECT_EQ(paddle_signal({{a, omega, phase}}, h, kPistonHinge, kG, true, 2.0).elevation(0), 0);
+}
+
+TEST(LinearWaves, StokesSecondHarmonicMeetsItsDeepAndShallowLimits) {
+  // Deep water: k a^2 / 2; shallow: 3 a^2 / (4 k^2 h^3).
+  const double a = 0.05, k = 3.0;
+  EXPECT_NEAR(stokes_second_harmonic(a, k, 20.0), 0.5 * k * a * a, 1e-12);
+  const double h = 0.001 / k;
+  EXPECT_NEAR(stokes_second_harmonic(a, k, h) / (3 * a * a / (4 * k * k * h * h * h)), 1.0, 1e-5);
+}
+
 TEST(Jonswap, ComponentsHoldTheSignificantHeightPeakAndSeed) {
   JonswapSea sea;
   sea.significant_height = 0.1;
