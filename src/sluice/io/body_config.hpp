@@ -41,7 +41,7 @@ struct WavemakerConfig {
   int order = 1;                  // regular piston: 2 adds Madsen's (1971) second harmonic
   waves::PaddleSignal signal;
   // Active absorption (sim/paddle_absorber.hpp): the paddle adds absorption_gain [1/s] times
-  // the water's excess over `signal`'s elevation at its face to its velocity.
+  // (`signal`'s elevation at its face less the water's there) to its velocity.
   bool active_absorption = false;
   double absorption_gain = 0;
 };

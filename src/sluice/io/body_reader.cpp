@@ -90,7 +90,7 @@ WavemakerConfig read_wavemaker(MapReader& map, const BodyContext& context) {
   w.active_absorption = map.optional<bool>("active_absorption", false);
   if (w.active_absorption) {
     // The transfer function read backwards at the (peak) frequency: the paddle velocity that
-    // makes a wave of unit elevation, omega / (H/S); sqrt(g/h) in shallow water.
+    // makes a wave of unit elevation, omega / (H/S); sqrt(g/h) for a piston in shallow water.
     const double omega = 2 * std::numbers::pi / w.period;
     const double k = waves::wavenumber(omega, w.water_depth, context.gravity);
     w.absorption_gain = omega / waves::height_over_stroke(k, w.water_depth, hinge);

@@ -56,11 +56,13 @@ PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth
     signal.parts.push_back(
         {w.amplitude / height_over_stroke(k, depth, hinge_depth), w.omega, w.phase});
     signal.surface.push_back({w.amplitude, w.omega, w.phase});
+    if (waves.size() == 1) {
+      signal.surface.push_back(
+          {stokes_second_harmonic(w.amplitude, k, depth), 2 * w.omega, 2 * w.phase});
+    }
     if (second_order) {
       signal.parts.push_back(
           {madsen_second_harmonic(2 * w.amplitude, k, depth), 2 * w.omega, 2 * w.phase});
-      signal.surface.push_back(
-          {stokes_second_harmonic(w.amplitude, k, depth), 2 * w.omega, 2 * w.phase});
     }
   }
   return signal;

@@ -35,8 +35,9 @@ struct PaddleSignal {
 // below the still water line (kPistonHinge: a piston): each component through the transfer
 // function at its own frequency, as (amplitude / (H/S)) sin(omega t + phase) (the paddle moves
 // forward fastest under a crest). `second_order`: add Madsen's (1971) second harmonic to each
-// component (meant for a piston making one wave train), and to the surface the Stokes
-// second-order harmonic that the wave carries with it.
+// component (meant for a piston making one wave train). The surface of one wave train has the
+// Stokes second-order harmonic that the wave carries with it, whatever the paddle's order; a
+// sea of several components has their first-order sum.
 PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth,
                            double hinge_depth, double gravity, bool second_order, double ramp_time);
 

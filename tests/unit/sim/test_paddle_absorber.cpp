@@ -49,29 +49,43 @@ TEST(PaddleAbsorber, StillWaterAtTheTargetLeavesThePaddleWhereItIs) {
   EXPECT_DOUBLE_EQ(water.read_at[0], 0.2 + 0.04);  // the gap before the face
 }
 
-TEST(PaddleAbsorber, WaterAboveTheTargetMovesThePaddleBackAtTheGain) {
-  const double gain = 3.0, gap = 0.04, dt = 0.01;
+TEST(PaddleAbsorber, WaterAboveItsMeanMovesThePaddleBackAtTheGain) {
+  const double gain = 3.0, gap = 0.04, dt = 0.01, ten_periods = 20.0;
   const io::BodyConfig paddle = still_piston(gain);
   PaddleAbsorber absorber(paddle, 0.0, gap);
   LevelWater water;
-  water.height = 0.51;  // a crest 1 cm high arriving
   absorber.measure(0.0, water);
-  EXPECT_NEAR(absorber.at(dt).velocity, -gain * 0.01, 1e-15);
-  EXPECT_NEAR(absorber.at(dt).displacement, -gain * 0.01 * dt, 1e-15);
-  // The crest gone: only the leak back to the mean position, over ten periods, remains; the
-  // displacement goes on from where it was, and the water is read before the moved face.
-  water.height = 0.5;
+  water.height = 0.51;  // a crest 1 cm high arriving; the mean level moves dt / 10 T of it
   absorber.measure(dt, water);
-  const double moved = -gain * 0.01 * dt;
-  EXPECT_NEAR(absorber.at(dt).displacement, moved, 1e-15);
-  EXPECT_NEAR(absorber.at(dt).velocity, -moved / (10 * 2.0), 1e-15);
+  double mean = 0.01 * dt / ten_periods;
+  EXPECT_NEAR(absorber.at(2 * dt).velocity, -gain * (0.01 - mean), 1e-15);
+  const double moved = -gain * (0.01 - mean) * dt;
+  EXPECT_NEAR(absorber.at(2 * dt).displacement, moved, 1e-15);
+  // The crest gone: the mean level's own lag and the leak back to the mean position remain;
+  // the displacement goes on from where it was, and the water is read before the moved face.
+  water.height = 0.5;
+  absorber.measure(2 * dt, water);
+  mean -= mean * dt / ten_periods;
+  EXPECT_NEAR(absorber.at(2 * dt).displacement, moved, 1e-15);
+  EXPECT_NEAR(absorber.at(2 * dt).velocity, gain * mean - moved / ten_periods, 1e-15);
   EXPECT_NEAR(water.read_at[0], 0.2 + moved + gap, 1e-15);
+}
+
+TEST(PaddleAbsorber, ASteadyErrorOfTheReadingDoesNotMoveIt) {
+  const io::BodyConfig paddle = still_piston(3.0);
+  PaddleAbsorber absorber(paddle, 0.0, 0.04);
+  LevelWater water;
+  water.height = 0.503;  // the gauge reads 3 mm high from the start
+  for (int step = 0; step < 1000; ++step) absorber.measure(0.01 * step, water);
+  EXPECT_EQ(absorber.at(10.0).displacement, 0.0);
+  EXPECT_EQ(absorber.at(10.0).velocity, 0.0);
 }
 
 TEST(PaddleAbsorber, ItsStateComesBackFromACheckpoint) {
   const io::BodyConfig paddle = still_piston(3.0);
   PaddleAbsorber written(paddle, 0.0, 0.04), read(paddle, 0.0, 0.04);
   LevelWater water;
+  written.measure(0.1, water);
   water.height = 0.52;
   written.measure(0.3, water);
   StateArchive out;

@@ -104,19 +104,30 @@ TEST(PaddleSignal, StrokeIsTheHeightOverTheTransferFunction) {
   EXPECT_NEAR(s.velocity(0), s.parts[0].amplitude * omega, 1e-15);
 }
 
-TEST(PaddleSignal, ElevationIsTheSeaAskedForWithItsBoundHarmonicAtSecondOrder) {
-  const double h = 0.5, k = 1 / h, omega = angular_frequency(k, h, kG), a = 0.02, phase = 0.4;
-  for (bool second_order : {false, true}) {
-    const PaddleSignal s = paddle_signal({{a, omega, phase}}, h, kPistonHinge, kG, second_order, 0);
-    const double bound = second_order ? stokes_second_harmonic(a, k, h) : 0;
-    for (double t : {0.0, 0.7, 3.1}) {
-      EXPECT_NEAR(s.elevation(t),
-                  a * std::cos(omega * t + phase) + bound * std::cos(2 * (omega * t + phase)),
-                  1e-15);
+// What active absorption relies on: a first-order paddle's velocity is omega / (H/S) times the
+// elevation it makes, in phase (a crest as it moves forward fastest).
+TEST(PaddleSignal, VelocityIsTheGainTimesTheFirstOrderElevation) {
+  const double h = 0.5, a = 0.02, phase = 0.4;
+  for (double hinge : {kPistonHinge, h, 0.7 * h}) {
+    for (double kh : {0.5, 1.0, 2.0}) {
+      const double k = kh / h, omega = angular_frequency(k, h, kG);
+      const PaddleSignal one = paddle_signal({{a, omega, phase}}, h, hinge, kG, false, 0);
+      const double gain = omega / height_over_stroke(k, h, hinge);
+      // One train: its surface carries the bound harmonic too, which the paddle does not make.
+      const double bound = stokes_second_harmonic(a, k, h);
+      for (double t : {0.0, 0.7, 3.1}) {
+        EXPECT_NEAR(one.velocity(t),
+                    gain * (one.elevation(t) - bound * std::cos(2 * (omega * t + phase))), 1e-14)
+            << "kh " << kh << " t " << t;
+      }
+      // A sea of two: their first-order sum, no bound harmonics.
+      const PaddleSignal two =
+          paddle_signal({{a, omega, phase}, {a, omega, phase + 1}}, h, hinge, kG, false, 0);
+      EXPECT_NEAR(two.velocity(1.3), gain * two.elevation(1.3), 1e-14);
     }
   }
   // Ramped as the displacement is: nothing at the start.
-  EXPECT_EQ(paddle_signal({{a, omega, phase}}, h, kPistonHinge, kG, true, 2.0).elevation(0), 0);
+  EXPECT_EQ(paddle_signal({{a, 2.0, phase}}, h, kPistonHinge, kG, true, 2.0).elevation(0), 0);
 }
 
 TEST(LinearWaves, StokesSecondHarmonicMeetsItsDeepAndShallowLimits) {
