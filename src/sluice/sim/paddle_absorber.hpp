@@ -10,9 +10,9 @@
 // frequency, here tuned to one). T is the wave's period. eta_mean, the reading's running mean
 // over ten periods (from the first reading on), keeps a steady error of the reading (a particle
 // model's gauge reads in quarter spacings; its water settles) from setting the paddle off; the
-// leak, over ten periods too, brings the paddle back to its mean position. Neither touches the
-// waves. The reading is taken as if at the face: the gap costs a reflection of about
-// tan(k gap / 2) (3-4 % at two cells of 0.02 m and kh = 1).
+// leak, over ten periods too, brings the paddle back to its mean position. Each passes under
+// 2 % of the wave's frequency. The reading is taken as if at the face: the gap costs a reflection
+// of about tan(k gap / 2) (3-4 % at two cells of 0.02 m and kh = 1).
 #pragma once
 
 #include "sluice/core/state_archive.hpp"
