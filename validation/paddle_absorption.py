@@ -3,15 +3,16 @@
 
 Runs cases/paddle_absorption_2d.yaml (the F8 piston at kh = 1, steepness 0.02, water 0.5 m
 deep, a wall two wavelengths from the paddle's face and no damping zone) to 30 s with
-`active_absorption` on and off, with each of --models (mac and wcsph, at 0.02 m). Over windows of three periods sliding along the records, the
-incident and reflected waves at the gauges a wavelength from the paddle and a quarter beyond
+`active_absorption` on and off, for each of --runs MODEL@PADDLE (the grid's and wcsph's piston,
+the grid's flap hinged at the bed, first order; 0.02 m). Over windows of three periods sliding
+along the records, the incident and reflected waves at the gauges a wavelength from the paddle and a quarter beyond
 (Goda & Suzuki 1976): with absorption the incident wave should stay Biésel's while the wall
 returns it whole; without, the paddle sends the returning waves out again. Writes
 docs/validation.md's table f8-absorption and docs/img/f8_absorption.png; each run's probes.csv is
 kept in validation/results/.
 
 usage: /usr/bin/python3 validation/paddle_absorption.py [--no-run] [--threads N]
-                                                     [--models mac,wcsph]
+                                                     [--runs mac@piston,...]
 """
 import math
 import os
@@ -54,29 +55,34 @@ def main():
     parser.set_defaults(out=os.path.join("out", "validation", CASE))
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--resume", action="store_true")
-    parser.add_argument("--models", default="mac,wcsph", help="models to run, comma-separated")
+    parser.add_argument("--runs", default="mac@piston,wcsph@piston,mac@flap",
+                        help="MODEL@PADDLE,... to run")
     args = parser.parse_args()
     results = []
-    for model in args.models.split(","):
+    for item in args.runs.split(","):
+        model, paddle = item.split("@")
         for absorbing in (True, False):
             name = "f8_absorption_" + ("on" if absorbing else "off")
             name += "" if model == "mac" else f"_{model}"
+            name += "" if paddle == "piston" else f"_{paddle}"
             out = os.path.join(args.out, name)
+            sets = [f"bodies.0.prescribed.active_absorption={str(absorbing).lower()}"]
+            if paddle != "piston":
+                sets += [f"bodies.0.prescribed.paddle={paddle}", "bodies.0.prescribed.order=1"]
             if not args.no_run:
-                run_model(CASE, out, model, 0.02, END, args,
-                          [f"bodies.0.prescribed.active_absorption={str(absorbing).lower()}"])
+                run_model(CASE, out, model, 0.02, END, args, sets)
                 keep_results(out, name)
-            results.append((model, absorbing, windows(out, name),
+            results.append((f"{model}, {paddle}", absorbing, windows(out, name),
                             result_statistics(out, name) or {}))
 
-    lines = ["| model | active absorption | incident H, 14-22 s [m] | from Biésel's 0.0628 | "
+    lines = ["| model, paddle | active absorption | incident H, 14-22 s [m] | from Biésel's 0.0628 | "
              "incident H, last 3 periods [m] | from Biésel's | the wall's reflection, last 3 "
              "periods | steps | wall time |", "|---" * 9 + "|"]
     for model, absorbing, w, s in results:
         early = w[(w[:, 0] > 14 + 1.5 * PERIOD) & (w[:, 0] < 22 - 1.5 * PERIOD)]
         mean_early = early[:, 1].mean()
         wall = f"{s['wall']:.0f} s ({s['threads']} threads)" if s else ""
-        lines.append(f"| `{model}` | {'yes' if absorbing else 'no'} | {mean_early:.4f} | "
+        lines.append(f"| {model} | {'yes' if absorbing else 'no'} | {mean_early:.4f} | "
                      f"{100 * (mean_early / HEIGHT - 1):+.1f} % | {w[-1, 1]:.4f} | "
                      f"{100 * (w[-1, 1] / HEIGHT - 1):+.1f} % | {w[-1, 2]:.2f} | "
                      f"{s.get('steps', '')} | {wall} |")
@@ -85,7 +91,8 @@ def main():
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     for model, absorbing, w, _ in results:
         label = f"{model}: " + ("active absorption" if absorbing else "no absorption")
-        style = ("o-" if absorbing else "o--") if model == "mac" else ("s-" if absorbing else "s--")
+        marker = {"mac, piston": "o", "wcsph, piston": "s"}.get(model, "^")
+        style = marker + ("-" if absorbing else "--")
         axes[0].plot(w[:, 0], w[:, 1] / HEIGHT, style, ms=3, label=label)
         axes[1].plot(w[:, 0], w[:, 2], style, ms=3, label=label)
     axes[0].axhspan(0.95, 1.05, color="tab:green", alpha=0.3, label="±5 % of Biésel")
