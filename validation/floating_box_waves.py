@@ -23,10 +23,11 @@ import matplotlib.pyplot as plt
 import numpy as np
 from runs import (each_run, keep_results, model_runs_parser, read_columns, result_path,
                   result_statistics, run_model, save_figure, write_table)
-from wave_flume import goda_suzuki, harmonic
+from wave_flume import goda_suzuki, harmonic, wave
 
 CASE = "floating_box_waves_2d"
-G, DEPTH, PERIOD, END = 9.81, 0.5, 2.055237, 18.0
+G, DEPTH, END = 9.81, 0.5, 18.0
+K, PERIOD, _, _, _ = wave(0.75)  # the F8 flume's wave at kh = 0.75, as the case lays it out
 BEAM, DRAFT, REST = 0.6, 0.1, 0.5  # the box's length, draft and centre's height at rest
 GAUGES = (2.294, 3.341)  # half a wavelength from the paddle's face, and a quarter beyond
 # The bracket's other end: the heave added mass of a flat plate of the box's beam on the
@@ -35,23 +36,12 @@ GAUGES = (2.294, 3.341)  # half a wavelength from the paddle's face, and a quart
 ADDED_MASS_DEPTH = math.pi * BEAM / 8
 
 
-def wavenumber(omega):
-    """k from omega^2 = g k tanh(k h) by Newton's method."""
-    k = omega * omega / G
-    for _ in range(50):
-        f = G * k * math.tanh(k * DEPTH) - omega * omega
-        df = G * math.tanh(k * DEPTH) + G * k * DEPTH / math.cosh(k * DEPTH) ** 2
-        k -= f / df
-    return k
-
-
 def predicted_response(added_mass_depth=0.0):
     """The heave per unit incident amplitude: the bottom's Froude-Krylov force over the beam
     against the waterplane's stiffness less the box's inertia (and the added mass's)."""
     omega = 2 * math.pi / PERIOD
-    k = wavenumber(omega)
-    half = 0.5 * k * BEAM
-    force = math.cosh(k * (DEPTH - DRAFT)) / math.cosh(k * DEPTH) * math.sin(half) / half
+    half = 0.5 * K * BEAM
+    force = math.cosh(K * (DEPTH - DRAFT)) / math.cosh(K * DEPTH) * math.sin(half) / half
     w = omega * omega / G
     return force / (1 - w * DRAFT / (1 - w * added_mass_depth))
 
@@ -64,12 +54,11 @@ def figures(out, name):
     if probes["time [s]"][-1] < END * (1 - 1e-4) or box["time"][-1] < END * (1 - 1e-4):
         return None
     omega = 2 * math.pi / PERIOD
-    k = wavenumber(omega)
     late = probes["time [s]"] >= END - 5 * PERIOD
     t = probes["time [s]"][late]
     z1 = harmonic(t, probes["half_wavelength [m]"][late] - DEPTH, omega)
     z2 = harmonic(t, probes["quarter_beyond [m]"][late] - DEPTH, omega)
-    incident, reflected = goda_suzuki(z1, GAUGES[0], z2, GAUGES[1], k)
+    incident, reflected = goda_suzuki(z1, GAUGES[0], z2, GAUGES[1], K)
     body_late = box["time"] >= END - 5 * PERIOD
     heave = abs(harmonic(box["time"][body_late], box["z"][body_late], omega))
     return {"incident": incident, "reflection": reflected / incident, "heave": heave,

@@ -27,7 +27,7 @@ from runs import (case_parser, keep_results, read_columns, result_path, result_s
 from wave_flume import goda_suzuki, harmonic
 
 CASE = "paddle_absorption_2d"
-G, DEPTH, HEIGHT, PERIOD, END = 9.81, 0.5, 0.0628, 1.6254, 30.0
+DEPTH, HEIGHT, PERIOD, END = 0.5, 0.0628, 1.6254, 30.0
 GAUGES = (3.342, 4.127)
 K = 2.0  # kh = 1
 
