@@ -20,7 +20,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import numpy as np
 from runs import (each_run, keep_results, model_runs_parser, read_columns, result_path,
                   result_statistics, run_model, save_figure, write_table)
 from wave_flume import goda_suzuki, harmonic, wave
