@@ -1,7 +1,8 @@
 // Open boundaries against a published answer: flow past a cylinder in a channel, Schäfer &
-// Turek's (1996) benchmark 2D-1 (Re = 20, steady), cases/cylinder_channel_2d.yaml, with the
-// grid model between a parabolic inlet and a pressure outlet. validation/cylinder_channel.py
-// runs the finer grids and draws the coefficients' convergence (docs/validation.md, F7).
+// Turek's (1996) benchmark 2D-1 (Re = 20, steady), between a parabolic inlet and a pressure
+// outlet: cases/cylinder_channel_2d.yaml with the grid model, cases/cylinder_channel_wcsph_2d.yaml
+// with weakly compressible SPH and its transport velocity. validation/cylinder_channel.py runs
+// the finer grids and draws the coefficients' convergence (docs/validation.md, F7).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,6 +60,36 @@ TEST(OpenBoundaries, CylinderInAChannelMeetsSchaeferTurek2D1) {
                          100 * (drop / kPressureDropMiddle - 1), testing::Bound::within, 2);
   testing::report_limit({"2D-1 `mac` (0.005 m) C_L from the range's middle", "%", 1},
                         100 * (c_l / kLiftMiddle - 1), testing::Bound::within, 5);
+}
+
+// 2D-1 with `wcsph` at 0.005 m (20 particles across the cylinder), the inflow ramped up over
+// 4 s, to 7 s: the drag coefficient, the mean of the last second, within 5 % of the range's
+// middle (measured +2.8 %; +5.2 % at 0.01 m, so the error falls with the spacing). The pressure
+// drop across the cylinder (+2.9 %) is reported against the grid model's 2 % bar, not held: the
+// probes' kernel-weighted means of noisy particle pressures read it 3 % high at this size.
+TEST(OpenBoundaries, WcsphCylinderInAChannelMeetsSchaeferTurek2D1) {
+  Simulation<2> sim(load_case("cylinder_channel_wcsph_2d.yaml", {}));
+  const double end = 7.0, from = 6.0;
+  const FluidObservation& fluid = sim.fluid().observation();
+  double drag = 0, lift = 0, drop = 0, span = 0;
+  run_until(sim, end, [&](const StepClock& c) {
+    if (c.time <= from) return;
+    drag += c.dt * sim.coupler().fluid_force()[0].x();
+    lift += c.dt * sim.coupler().fluid_force()[0].z();
+    drop += c.dt * (fluid.pressure_at(Vec3(0.15, 0, 0.2)) - fluid.pressure_at(Vec3(0.25, 0, 0.2)));
+    span += c.dt;
+  });
+  const double c_d = kCoefficientPerNewton * drag / span;
+  const double c_l = kCoefficientPerNewton * lift / span;
+  drop /= span;
+  std::printf(
+      "2D-1 wcsph at 0.005 m: C_D %.4f (5.57-5.59), C_L %.5f (0.0104-0.0110), dp %.5f Pa "
+      "(0.1172-0.1176)\n",
+      c_d, c_l, drop);
+  testing::expect_figure({"2D-1 `wcsph` (0.005 m) C_D from the range's middle", "%", 2},
+                         100 * (c_d / kDragMiddle - 1), testing::Bound::within, 5);
+  testing::report_limit({"2D-1 `wcsph` (0.005 m) pressure drop from the range's middle", "%", 2},
+                        100 * (drop / kPressureDropMiddle - 1), testing::Bound::within, 2);
 }
 
 }  // namespace

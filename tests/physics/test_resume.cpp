@@ -111,6 +111,11 @@ const ResumeCase kCases[] = {
      "paddle_absorption_2d.yaml",
      1.0,
      {"spacing=0.04", "output_interval=0.25"}},
+    // Open boundaries' buffers and a transport velocity's background acceleration.
+    {"wcsph_transport_velocity_channel",
+     "cylinder_channel_wcsph_2d.yaml",
+     0.4,
+     {"spacing=0.02", "output_interval=0.1"}},
     {"wcsph_3d_cubes", "dam_break_cubes_3.yaml", 0.04, {"spacing=0.05"}},
     {"bodies_alone_joints", "pendulum.yaml", 0.4, {}},
     {"bodies_alone_complementarity", "sphere_stack.yaml", 0.4, {}},

@@ -1,6 +1,7 @@
 #include "sluice/fluid/particle_open_boundaries.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace sluice {
@@ -101,6 +102,10 @@ void ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int
   hand_over.joined.clear();
   hand_over.left.clear();
   hand_over.dropped.clear();
+  for (std::size_t b = 0; b < sides_.size(); ++b) {
+    if (sides_[b].kind == io::BoundaryKind::kOutlet)
+      extrapolate_outlet_velocity(ps, zone, b, owned);
+  }
   std::vector<unsigned char> copy;
   for (std::size_t i = 0; i < before; ++i) {
     if (owned && ps[*owned][i] < 0) continue;
@@ -142,6 +147,53 @@ void ParticleOpenBoundaries<D>::advance(ParticleSet<D>& ps, FieldHandle<std::int
     hand_over.joined.push_back(static_cast<std::uint32_t>(i));
   }
   gone.resize(ps.size(), false);
+}
+
+template <int D>
+void ParticleOpenBoundaries<D>::extrapolate_outlet_velocity(
+    ParticleSet<D>& ps, FieldHandle<std::int32_t> zone, std::size_t index,
+    std::optional<FieldHandle<std::int32_t>> owned) const {
+  const io::BoundaryConfig& side = sides_[index];
+  const Real width = 2 * spacing_;
+  // The squares across the flow: the domain's other axes (2D: the one), in widths of two
+  // spacings.
+  std::array<int, 2> across{}, count{1, 1};
+  for (int b = 0, k = 0; b < D; ++b) {
+    if (b == model_axis(side)) continue;
+    across[static_cast<std::size_t>(k)] = b;
+    const int b3 = D == 3 ? b : 2 * b;
+    count[static_cast<std::size_t>(k++)] =
+        std::max(1, static_cast<int>(std::ceil((domain_.max[b3] - domain_.min[b3]) / width)));
+  }
+  auto square_of = [&](const Vec<D>& x) {
+    std::size_t square = 0;
+    for (int k = 0; k < D - 1; ++k) {
+      const int b = across[static_cast<std::size_t>(k)];
+      const int b3 = D == 3 ? b : 2 * b;
+      const int n = count[static_cast<std::size_t>(k)];
+      const int at =
+          std::clamp(static_cast<int>(std::floor((x[b] - domain_.min[b3]) / width)), 0, n - 1);
+      square = square * static_cast<std::size_t>(n) + static_cast<std::size_t>(at);
+    }
+    return square;
+  };
+  std::vector<Vec<D>> sum(static_cast<std::size_t>(count[0]) * static_cast<std::size_t>(count[1]),
+                          Vec<D>::Zero());
+  std::vector<int> found(sum.size(), 0);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (!ps.is_fluid(i)) continue;
+    const Real beyond = beyond_inner_face(side, ps.position[i]);
+    if (beyond > 0 || beyond < -width) continue;
+    const std::size_t square = square_of(ps.position[i]);
+    sum[square] += ps.velocity[i];
+    ++found[square];
+  }
+  const auto own = static_cast<std::int32_t>(index + 1);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (ps[zone][i] != own || (owned && ps[*owned][i] < 0)) continue;
+    const std::size_t square = square_of(ps.position[i]);
+    if (found[square] > 0) ps.velocity[i] = sum[square] / found[square];
+  }
 }
 
 template <int D>

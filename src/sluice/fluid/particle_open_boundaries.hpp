@@ -7,9 +7,11 @@
 //   buffer's inner face becomes fluid, and a copy of it one buffer's depth back takes its place,
 //   so that the buffer stays full and the mass flux in is the buffer's, without a jump. Fluid
 //   that drifts back into the buffer (beside a no-slip wall, where the inflow is slow) goes.
-// - Outlet: fluid that enters the buffer becomes a buffer particle that moves on at the velocity
-//   it had (its pressure prescribed, where the case gives a pressure or a depth, else the
-//   fluid's); it goes when it leaves the domain, and becomes fluid again if it turns back.
+// - Outlet: fluid that enters the buffer becomes a buffer particle that moves at the velocity of
+//   the fluid just inside the buffer's face at its place across the flow (a zero gradient along
+//   the outward normal; its pressure prescribed, where the case gives a pressure or a depth,
+//   else the fluid's); it goes when it leaves the domain, and becomes fluid again if it turns
+//   back.
 // A buffer particle's `open_boundary` field is its boundary's index plus one (0: none).
 #pragma once
 
@@ -113,6 +115,13 @@ class ParticleOpenBoundaries {
   // The outlet's pressure at x: its pressure, and hydrostatic below its depth (shifted by
   // `surface_shift`).
   Real outlet_pressure(const io::BoundaryConfig& side, const Vec<D>& x, Real surface_shift) const;
+  // Each of outlet `index`'s buffer particles takes the mean velocity of the fluid within two
+  // spacings inside the buffer's face, in its square (strip, in 2D) two spacings wide across the
+  // flow; one whose square holds no fluid keeps its velocity. With `owned`, the ghosts' velocities
+  // count (they are copies) but are left to their owners to set.
+  void extrapolate_outlet_velocity(ParticleSet<D>& ps, FieldHandle<std::int32_t> zone,
+                                   std::size_t index,
+                                   std::optional<FieldHandle<std::int32_t>> owned) const;
 
   std::vector<io::BoundaryConfig> sides_;
   AxisBox domain_;

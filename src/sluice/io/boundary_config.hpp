@@ -24,6 +24,8 @@ struct BoundaryConfig {
   InletProfile profile = InletProfile::kUniform;
   double mean_speed = 0;
   std::vector<std::pair<double, double>> speed_table;  // (time, mean speed)
+  // The inflow starts from rest over ramp_time (0: at once), as a body does (smooth_ramp.hpp).
+  double ramp_time = 0;
   // The water's surface height at the side (a free-surface channel): water enters below it,
   // and an outlet's pressure is hydrostatic below it. Unset: the side's whole span.
   std::optional<double> depth;
@@ -33,7 +35,7 @@ struct BoundaryConfig {
   std::string key;  // "boundaries[N]", for messages
   int line = 0;
 
-  // The inlet's mean speed at `time`.
+  // The inlet's mean speed at `time`, ramped.
   double speed_at(double time) const;
   // The inflow's profile at share `s` (0 to 1) of the span along one axis across the side, of
   // mean 1: 1, or the parabola 6 s (1 - s).

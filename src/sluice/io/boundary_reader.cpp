@@ -7,19 +7,21 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "sluice/core/smooth_ramp.hpp"
 #include "sluice/io/csv_table.hpp"
 
 namespace sluice::io {
 
 double BoundaryConfig::speed_at(double time) const {
-  if (speed_table.empty()) return mean_speed;
-  if (time <= speed_table.front().first) return speed_table.front().second;
-  if (time >= speed_table.back().first) return speed_table.back().second;
+  const double share = smooth_ramp(time, ramp_time).share;
+  if (speed_table.empty()) return share * mean_speed;
+  if (time <= speed_table.front().first) return share * speed_table.front().second;
+  if (time >= speed_table.back().first) return share * speed_table.back().second;
   const auto after = std::upper_bound(speed_table.begin(), speed_table.end(), time,
                                       [](double t, const auto& row) { return t < row.first; });
   const auto before = after - 1;
   const double s = (time - before->first) / (after->first - before->first);
-  return (1 - s) * before->second + s * after->second;
+  return share * ((1 - s) * before->second + s * after->second);
 }
 
 std::vector<std::pair<double, double>> read_speed_table(const std::string& path,
@@ -99,6 +101,7 @@ BoundaryConfig read_boundary(MapReader& map, std::size_t index, const AxisBox& d
       const std::string path = (std::filesystem::path(case_file).parent_path() / file).string();
       b.speed_table = read_speed_table(path, map, "speed_table");
     }
+    b.ramp_time = map.optional_non_negative("ramp_time", 0.0);
   } else {
     if (map.has("pressure")) {
       b.pressure = map.required<double>("pressure");

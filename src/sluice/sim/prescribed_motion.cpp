@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "sluice/core/smooth_ramp.hpp"
+
 namespace sluice {
 
 Eigen::Quaterniond rotation_from_angles(const Vec3& angles) {
@@ -53,12 +55,8 @@ ShapePose prescribed_pose(const io::BodyConfig& body, double time,
     case io::PrescribedKind::kConstantVelocity: {
       // A smooth start, (1 - cos(pi t / T)) / 2 of the speed, spares the fluid the pressure
       // wave of an impulsive one; `travelled` is its integral, the time spent at full speed.
-      const double ramp = p.ramp_time;
-      const double share = time >= ramp ? 1 : (1 - std::cos(std::numbers::pi * time / ramp)) / 2;
-      const double travelled =
-          time >= ramp
-              ? time - ramp / 2
-              : (time - ramp / std::numbers::pi * std::sin(std::numbers::pi * time / ramp)) / 2;
+      const SmoothRamp ramp = smooth_ramp(time, p.ramp_time);
+      const double share = ramp.share, travelled = ramp.integral;
       velocity = share * body.velocity;
       rates = share * body.angular_velocity;
       position += travelled * body.velocity;

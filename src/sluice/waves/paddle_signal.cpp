@@ -3,31 +3,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "sluice/core/smooth_ramp.hpp"
 #include "sluice/waves/linear_waves.hpp"
 #include "sluice/waves/paddle_transfer.hpp"
 
 namespace sluice::waves {
 
-namespace {
-
-// The ramp's value and its rate at `time`.
-struct Ramp {
-  double value = 1, rate = 0;
-};
-
-Ramp ramp_at(double time, double ramp_time) {
-  if (time >= ramp_time) return {};
-  if (time <= 0) return {0, 0};
-  const double a = std::numbers::pi / ramp_time;
-  return {(1 - std::cos(a * time)) / 2, a * std::sin(a * time) / 2};
-}
-
-}  // namespace
-
 double PaddleSignal::displacement(double time) const {
   double x = 0;
   for (const auto& p : parts) x += p.amplitude * std::sin(p.omega * time + p.phase);
-  return ramp_at(time, ramp_time).value * x;
+  return smooth_ramp(time, ramp_time).share * x;
 }
 
 double PaddleSignal::velocity(double time) const {
@@ -36,14 +21,14 @@ double PaddleSignal::velocity(double time) const {
     x += p.amplitude * std::sin(p.omega * time + p.phase);
     v += p.amplitude * p.omega * std::cos(p.omega * time + p.phase);
   }
-  const Ramp r = ramp_at(time, ramp_time);
-  return r.value * v + r.rate * x;
+  const SmoothRamp r = smooth_ramp(time, ramp_time);
+  return r.share * v + r.rate * x;
 }
 
 double PaddleSignal::elevation(double time) const {
   double eta = 0;
   for (const auto& p : surface) eta += p.amplitude * std::cos(p.omega * time + p.phase);
-  return ramp_at(time, ramp_time).value * eta;
+  return smooth_ramp(time, ramp_time).share * eta;
 }
 
 PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth,

@@ -1,6 +1,7 @@
 // The particle models' open boundaries (fluid/particle_open_boundaries.hpp): an inlet's buffer
 // moves at the inflow's velocity and refills itself behind each particle that leaves it, an
-// outlet's buffer takes the fluid that enters it and drops what leaves the domain, fluid that
+// outlet's buffer takes the fluid that enters it, moves at the velocity of the fluid beside it
+// and drops what leaves the domain, fluid that
 // drifts back into an inlet's buffer goes, the flux
 // estimate reads a moving lattice's flux exactly, and an outlet's pressure is hydrostatic below
 // its depth.
@@ -96,7 +97,7 @@ TEST(ParticleOpenBoundaries, OutletTakesTheFluidThatEntersItAndDropsWhatLeavesTh
   p.add(1.85, 0.05, 0.4, ParticleKind::kFluid, 0);  // in the outlet's buffer: joins it
   p.add(1.75, 0.05, 0.4, ParticleKind::kFluid, 0);  // before it: stays fluid
   p.add(1.97, 0.05, 0.4, ParticleKind::kWall, 2);   // leaves the domain
-  p.add(1.81, 0.05, -0.4, ParticleKind::kWall, 2);  // turns back: fluid again
+  p.add(1.81, 0.45, -0.4, ParticleKind::kWall, 2);  // turns back (no fluid beside): fluid again
   EXPECT_EQ(open.start(p.set, p.zone), 1u);
   EXPECT_EQ(p.set.kind[0], ParticleKind::kWall);
   EXPECT_EQ(p.set[p.zone][0], 2);
@@ -110,10 +111,36 @@ TEST(ParticleOpenBoundaries, OutletTakesTheFluidThatEntersItAndDropsWhatLeavesTh
   EXPECT_EQ(hand_over.left, std::vector<std::uint32_t>{4});
   EXPECT_EQ(p.set.kind[4], ParticleKind::kWall);
   EXPECT_EQ(p.set[p.zone][4], 2);
-  EXPECT_NEAR(p.set.position[0][0], 1.89, 1e-12);  // on at the velocity it had
+  EXPECT_NEAR(p.set.position[0][0], 1.89, 1e-12);  // on at the velocity of the fluid beside
   EXPECT_EQ(p.set.kind[1], ParticleKind::kFluid);
   EXPECT_EQ(p.set.kind[3], ParticleKind::kFluid);
   EXPECT_EQ(p.set[p.zone][3], 0);
+}
+
+// An outlet's buffer particle moves at the mean velocity of the fluid within two spacings inside
+// the buffer's face at its height (in strips two spacings high), whatever velocity it had; one
+// with no fluid at its height keeps its own, and so does a ghost (its owned kind -1).
+TEST(ParticleOpenBoundaries, OutletBufferTakesTheVelocityOfTheFluidBesideIt) {
+  const ParticleOpenBoundaries<2> open = channel();
+  Particles p;
+  const auto owned = p.set.add_int_field({"owned_kind", "1", false});
+  p.add(1.75, 0.05, 0.2, ParticleKind::kFluid, 0);  // the strip 0 to 0.2 m high
+  p.add(1.65, 0.15, 0.4, ParticleKind::kFluid, 0);
+  p.add(1.55, 0.15, 9.0, ParticleKind::kFluid, 0);  // farther than two spacings: not counted
+  p.add(1.75, 0.25, 0.6, ParticleKind::kFluid, 0);  // the strip 0.2 to 0.4 m
+  p.add(1.85, 0.10, 0.0, ParticleKind::kWall, 2);   // buffer particles
+  p.add(1.95, 0.30, 0.0, ParticleKind::kWall, 2);
+  p.add(1.85, 0.50, 0.1, ParticleKind::kWall, 2);  // no fluid at its height
+  p.add(1.85, 0.10, 0.0, ParticleKind::kWall, 2);  // a ghost
+  for (std::size_t i = 0; i < p.set.size(); ++i) p.set[owned][i] = i == 7 ? -1 : 0;
+  std::vector<bool> gone;
+  BufferHandOver hand_over;
+  open.advance(p.set, p.zone, 0, 0.01, gone, hand_over, owned);
+  EXPECT_NEAR(p.set.velocity[4][0], 0.3, 1e-12);
+  EXPECT_NEAR(p.set.velocity[5][0], 0.6, 1e-12);
+  EXPECT_NEAR(p.set.velocity[6][0], 0.1, 1e-12);
+  EXPECT_EQ(p.set.velocity[7][0], 0.0);
+  EXPECT_NEAR(p.set.position[4][0], 1.853, 1e-12);  // moved at its new velocity
 }
 
 // Fluid that drifts back into an inlet's buffer (or past the side) goes; fluid before the

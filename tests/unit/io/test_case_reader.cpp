@@ -356,13 +356,14 @@ TEST(CaseReader, TravelDirectionIsMadeHorizontalAndUnit) {
             "case.yaml:11: key 'travel_direction': must not be zero");
 }
 
-// Open boundaries as documented: sides, kinds, profile, depth; a flux probe names one; an inlet's
-// speed table interpolates linearly and holds its ends.
+// Open boundaries as documented: sides, kinds, profile, depth, ramp; a flux probe names one; an
+// inlet's speed table interpolates linearly and holds its ends.
 TEST(CaseReader, ReadsOpenBoundariesAndTheirFluxProbes) {
   const CaseConfig c = parse_case(
       kMinimal +
           "boundaries:\n"
-          "  - {name: in, type: inlet, side: x-, profile: parabolic, mean_speed: 0.2, depth: 1}\n"
+          "  - {name: in, type: inlet, side: x-, profile: parabolic, mean_speed: 0.2, depth: 1,\n"
+          "     ramp_time: 2}\n"
           "  - {type: outlet, side: x+, pressure: 30}\n"
           "probes:\n"
           "  - {name: out, type: flux, boundary: outlet1}\n",
@@ -373,6 +374,8 @@ TEST(CaseReader, ReadsOpenBoundariesAndTheirFluxProbes) {
   EXPECT_EQ(in.side_name(), "x-");
   EXPECT_EQ(in.profile, InletProfile::kParabolic);
   EXPECT_EQ(in.speed_at(7), 0.2);
+  EXPECT_NEAR(in.speed_at(1), 0.1, 1e-15);  // halfway up its ramp
+  EXPECT_EQ(in.speed_at(0), 0.0);
   ASSERT_TRUE(in.depth.has_value());
   EXPECT_EQ(*in.depth, 1.0);
   const BoundaryConfig& out = c.boundaries[1];

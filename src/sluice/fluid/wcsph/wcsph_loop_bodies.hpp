@@ -24,6 +24,7 @@ namespace sluice {
 inline constexpr int kRatesRangeMultiple = 1;
 #else
 inline constexpr int kRatesRangeMultiple = 8;
+
 #endif
 
 // The second half kick of kick-drift-kick: velocity and density from their half-step values
@@ -61,19 +62,23 @@ struct FluidMagnitude {
 
 // x, v and rho half a kick and a drift on (the first half of kick-drift-kick); velocity and
 // density are then predicted to the end of the step (a second half kick with the same rates)
-// for the force evaluation.
+// for the force evaluation. With a transport velocity (transport_velocity.hpp), the drift adds
+// half a step of the background pressure's acceleration to the half-step velocity.
 template <int D>
 struct WcsphKickDrift {
   WcsphFields<D> f;
   Real dt;
   TaitEquation eos;
+  const Real* background_acceleration = nullptr;  // with a transport velocity
   SLUICE_HOST_DEVICE void operator()(std::size_t i) const {
     if (!f.fluid(i)) return;
     const Real half_dt = 0.5 * dt;
     for (int a = 0; a < D; ++a) {
       const std::size_t k = D * i + a;
       f.half_velocity[k] = f.velocity[k] + half_dt * f.acceleration[k];
-      f.position[k] += dt * f.half_velocity[k];
+      const Real transport =
+          background_acceleration ? half_dt * background_acceleration[k] : Real(0);
+      f.position[k] += dt * (f.half_velocity[k] + transport);
     }
     f.half_density[i] = f.density[i] + half_dt * f.density_rate[i];
     wcsph_second_half_kick(f, i, half_dt, eos);

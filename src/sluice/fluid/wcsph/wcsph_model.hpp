@@ -2,7 +2,8 @@
 // density diffusion, Tait equation of state, artificial and laminar viscosity, kick-drift-kick
 // leapfrog. Walls are boundary particles whose pressure, density and velocity are
 // extrapolated from the fluid (Adami, Hu & Adams 2012), so the fluid sees them through the
-// ordinary momentum equation, with no gap at the wall. The step's loop bodies
+// ordinary momentum equation, with no gap at the wall. With `model.background_pressure` the
+// particles drift with a transport velocity (transport_velocity.hpp). The step's loop bodies
 // (wcsph_loop_bodies.hpp) run on the host's particle set with the OpenMP policy, or, with
 // `model.device`, on a device's copy of it (wcsph_device_run.hpp).
 #pragma once
@@ -12,11 +13,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
 #include "sluice/fluid/wcsph/packed_particles.hpp"
 #include "sluice/fluid/wcsph/tait.hpp"
+#include "sluice/fluid/wcsph/transport_velocity.hpp"
 #include "sluice/fluid/wcsph/wcsph_boundaries.hpp"
 #include "sluice/fluid/wcsph/wcsph_device_run.hpp"
 #include "sluice/fluid/wcsph/wcsph_loop_bodies.hpp"
@@ -47,6 +50,8 @@ class WcsphModel final : public ParticleFluid<D> {
         Kernel::kName, kernel_.h, p_.h_over_dx, eos_.c0, p_.artificial_viscosity,
         p_.density_diffusion, p_.no_slip ? "no-slip" : "free-slip",
         p_.clamp_negative_pressure ? "clamped" : "kept");
+    if (p_.background_pressure > 0)
+      out += fmt::format(", transport velocity (p_b = {:.4g} Pa)", p_.background_pressure);
     if (device_) {
       out += fmt::format(", on {} ({:.0f} bytes per particle there)", device_->name(),
                          device_->bytes_per_particle());
@@ -58,6 +63,8 @@ class WcsphModel final : public ParticleFluid<D> {
     ParticleState<D>& s = this->state();
     auto& ps = s.particles;
     fields_ = add_wcsph_fields(ps);
+    if (p_.background_pressure > 0)
+      background_ = ps.add_vector_field({"background_acceleration", "m/s^2"});
     this->carry_through_put_back(fields_.half_velocity);
     // The builder set a hydrostatic pressure; the density follows from the equation of state.
     for (std::size_t i = 0; i < ps.size(); ++i) {
@@ -149,6 +156,7 @@ class WcsphModel final : public ParticleFluid<D> {
       ps[fields_.half_density][i] = ps.density[i];
       ps[fields_.acceleration][i] = Vec<D>::Zero();
       ps[fields_.density_rate][i] = 0;
+      if (background_) ps[*background_][i] = Vec<D>::Zero();
     }
   }
 
@@ -206,7 +214,12 @@ class WcsphModel final : public ParticleFluid<D> {
   // First half kick and drift; velocity and density are then predicted to the end of the
   // step for the force evaluation, which keeps one force evaluation per step.
   void kick_drift(ParticleState<D>& s, Real dt) {
-    exec::Default::for_each(s.particles.size(), WcsphKickDrift<D>{fields(s), dt, eos_});
+    exec::Default::for_each(s.particles.size(),
+                            WcsphKickDrift<D>{fields(s), dt, eos_, background_acceleration(s)});
+  }
+
+  Real* background_acceleration(ParticleState<D>& s) const {
+    return background_ ? s.particles.template components<Real>("background_acceleration") : nullptr;
   }
 
   void kick(ParticleState<D>& s, Real dt) {
@@ -252,6 +265,11 @@ class WcsphModel final : public ParticleFluid<D> {
     // which keeps every kind): split, a ghost counts as no fluid here.
     n.f.kind = this->counted_kinds();
     exec::Default::for_each_balanced(s.particles.size(), WcsphRates<D, Kernel>{n});
+    if (background_) {
+      exec::Default::for_each_balanced(
+          s.particles.size(), WcsphBackgroundAcceleration<D, Kernel>{n, p_.background_pressure,
+                                                                     background_acceleration(s)});
+    }
   }
 
   WcsphPairConstants pair_constants(const ParticleState<D>& s) const {
@@ -274,6 +292,8 @@ class WcsphModel final : public ParticleFluid<D> {
   Kernel kernel_;
   TaitEquation eos_;
   WcsphFieldHandles<D> fields_;
+  // With a transport velocity: the background pressure's acceleration of each fluid particle.
+  std::optional<FieldHandle<Vec<D>>> background_;
   std::unique_ptr<BoundaryTreatment<WcsphBoundaryContext<D, Kernel>>> boundary_;
   PackedParticles packed_;
   Real max_speed_ = 0;

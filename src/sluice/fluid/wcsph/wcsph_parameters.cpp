@@ -43,6 +43,7 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
   p.clamp_negative_pressure =
       model.optional_choice("negative_pressure", "keep", "negative pressure", {"clamp", "keep"}) ==
       "clamp";
+  p.background_pressure = model.optional_non_negative("background_pressure", 0);
   p.boundary = model.optional_choice("boundary", p.boundary, "boundary treatment",
                                      wcsph_boundaries<3, WendlandC2<3>>().names());
   const std::string device =
@@ -54,6 +55,9 @@ WcsphParameters read_wcsph_parameters(const io::CaseConfig& config) {
   if (!wcsph_device_available(p.device, why)) model.fail("device", "cannot run on the GPU: " + why);
   if (p.device != WcsphDevice::kCpu && p.boundary != "adami") {
     model.fail("device", "the device runs the adami boundary treatment only");
+  }
+  if (p.device != WcsphDevice::kCpu && p.background_pressure > 0) {
+    model.fail("device", "the device runs no transport velocity (background_pressure)");
   }
   p.time_device_stages = model.optional<bool>("time_device_stages", p.time_device_stages);
   model.finish();

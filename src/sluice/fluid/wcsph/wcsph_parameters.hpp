@@ -24,6 +24,7 @@ struct WcsphParameters {
   double force_cfl = 0.25;                 // coefficient of sqrt(h / |a|max)
   bool no_slip = true;                     // walls: no-slip (true) or free-slip
   bool clamp_negative_pressure = false;    // the equation of state gives no pressure below 0
+  double background_pressure = 0;          // p_b of the transport velocity; 0: none
   std::string boundary = "adami";          // the boundary treatment, by name (wcsph_boundaries)
   WcsphDevice device = WcsphDevice::kCpu;  // where the particles live and the loops run
   bool time_device_stages = false;         // wait for the device at the end of every stage
