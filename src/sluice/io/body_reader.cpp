@@ -61,11 +61,6 @@ WavemakerConfig read_wavemaker(MapReader& map, const BodyContext& context) {
     }
     w.order = map.optional<int>("order", 1);
     if (w.order != 1 && w.order != 2) map.fail("order", "must be 1 or 2");
-    if (w.order == 2 && w.paddle == PaddleKind::kFlap) {
-      map.fail("order",
-               "second order is for a piston (Madsen 1971); a flap's (Schaeffer 1996) "
-               "is not implemented");
-    }
     sea.push_back({w.height / 2, omega, map.optional<double>("phase_deg", 0.0) * kDegree});
   } else {
     waves::JonswapSea js;

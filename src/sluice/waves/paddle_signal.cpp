@@ -1,11 +1,13 @@
 #include "sluice/waves/paddle_signal.hpp"
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 #include "sluice/core/smooth_ramp.hpp"
 #include "sluice/waves/linear_waves.hpp"
 #include "sluice/waves/paddle_transfer.hpp"
+#include "sluice/waves/second_order_wavemaker.hpp"
 
 namespace sluice::waves {
 
@@ -45,7 +47,11 @@ PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth
       signal.surface.push_back(
           {stokes_second_harmonic(w.amplitude, k, depth), 2 * w.omega, 2 * w.phase});
     }
-    if (second_order) {
+    if (second_order && std::isfinite(hinge_depth)) {
+      const std::complex<double> f = schaffer_second_order(w.omega, depth, hinge_depth, gravity);
+      signal.parts.push_back(
+          {w.amplitude * w.amplitude * std::abs(f), 2 * w.omega, 2 * w.phase + std::arg(f)});
+    } else if (second_order) {
       signal.parts.push_back(
           {madsen_second_harmonic(2 * w.amplitude, k, depth), 2 * w.omega, 2 * w.phase});
     }

@@ -34,8 +34,9 @@ struct PaddleSignal {
 // amplitude * cos(omega t + phase)) on water `depth` deep with the paddle hinged `hinge_depth`
 // below the still water line (kPistonHinge: a piston): each component through the transfer
 // function at its own frequency, as (amplitude / (H/S)) sin(omega t + phase) (the paddle moves
-// forward fastest under a crest). `second_order`: add Madsen's (1971) second harmonic to each
-// component (meant for a piston making one wave train). The surface of one wave train has the
+// forward fastest under a crest). `second_order`: add the second harmonic that cancels the
+// spurious free wave to each component (meant for one wave train): Madsen's (1971) for a piston,
+// Schäffer's (1996) for a flap (second_order_wavemaker.hpp). The surface of one wave train has the
 // Stokes second-order harmonic that the wave carries with it, whatever the paddle's order; a
 // sea of several components has their first-order sum.
 PaddleSignal paddle_signal(const std::vector<WaveComponent>& waves, double depth,

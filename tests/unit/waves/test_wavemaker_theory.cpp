@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 #include "sluice/waves/jonswap.hpp"
 #include "sluice/waves/linear_waves.hpp"
 #include "sluice/waves/paddle_signal.hpp"
 #include "sluice/waves/paddle_transfer.hpp"
+#include "sluice/waves/second_order_wavemaker.hpp"
 
 namespace sluice::waves {
 namespace {
@@ -78,6 +80,54 @@ TEST(PaddleTransfer, MadsensSecondHarmonicCancelsALongWavesBoundHarmonic) {
   // and in deep water it is -H^2 / (32 h) (2 / (H/S) = 1, the first term vanishing).
   EXPECT_GT(madsen_second_harmonic(0.05, 0.4 / 0.5, 0.5), 0);
   EXPECT_NEAR(madsen_second_harmonic(0.05, 40, 0.5), -0.05 * 0.05 / (32 * 0.5), 1e-12);
+}
+
+// Schäffer's (1996) superharmonic F for a flap hinged at the bed of water 0.5 m deep, against an
+// independent numpy implementation of the same sums (docs/notes/flap_second_order.md, section
+// 3.1: extrapolated from 400 and 800 evanescent modes), whose own derivation from the boundary
+// value problem agreed with the closed form to 1e-13. The sums converge as 1 / modes: the
+// default (400 and 800, extrapolated) reproduces the table's digits.
+TEST(SecondOrderWavemaker, FlapMatchesTheReferenceSums) {
+  const double h = 0.5;
+  const struct {
+    double kh;
+    std::complex<double> f;
+  } table[] = {
+      {0.5, {5.086352, -0.524993}}, {1.0, {-1.462085, -0.691992}}, {2.0, {-0.673006, -0.031254}}};
+  for (const auto& row : table) {
+    const double omega = angular_frequency(row.kh / h, h, kG);
+    const std::complex<double> f = schaffer_second_order(omega, h, h, kG);
+    EXPECT_NEAR(f.real(), row.f.real(), 2e-6 * std::abs(row.f)) << "kh " << row.kh;
+    EXPECT_NEAR(f.imag(), row.f.imag(), 2e-6 * std::abs(row.f)) << "kh " << row.kh;
+  }
+}
+
+// A piston in shallow water: Schäffer's theory tends to Madsen's (1971) long-wave formula, a
+// depth-integrated flux balance that leaves out the evanescent modes (0.006 % apart at
+// kh = 0.1); beyond kh of about 0.3 they part (section 2.2 of the notes).
+TEST(SecondOrderWavemaker, PistonTendsToMadsenInShallowWater) {
+  const double h = 0.5, kh = 0.1, k = kh / h, a = 0.001;
+  const std::complex<double> f =
+      schaffer_second_order(angular_frequency(k, h, kG), h, kPistonHinge, kG);
+  const double madsen = madsen_second_harmonic(2 * a, k, h);
+  EXPECT_NEAR(a * a * std::abs(f) / madsen - 1, 0, 2e-4);
+  EXPECT_NEAR(std::arg(f), 0, 1e-3);  // in phase with sin 2 omega t, as Madsen's
+  // At kh = 1 Madsen's is 0.28 of Schäffer's (the notes' table 3.2: 2.01e-4 against 7.21e-4 m).
+  const std::complex<double> deeper =
+      schaffer_second_order(angular_frequency(1 / h, h, kG), h, kPistonHinge, kG);
+  EXPECT_GT(a * a * std::abs(deeper) / madsen_second_harmonic(2 * a, 1 / h, h), 3);
+}
+
+// A flap's second-order signal carries Schäffer's harmonic, at twice the frequency and shifted
+// by arg F.
+TEST(PaddleSignal, FlapsSecondOrderIsSchaeffersHarmonic) {
+  const double h = 0.5, omega = angular_frequency(2.0, h, kG), a = 0.03;  // kh = 1
+  const PaddleSignal s = paddle_signal({{a, omega, 0.4}}, h, h, kG, true, 0);
+  ASSERT_EQ(s.parts.size(), 2u);
+  const std::complex<double> f = schaffer_second_order(omega, h, h, kG);
+  EXPECT_NEAR(s.parts[1].amplitude, a * a * std::abs(f), 1e-15);
+  EXPECT_EQ(s.parts[1].omega, 2 * omega);
+  EXPECT_NEAR(s.parts[1].phase, 0.8 + std::arg(f), 1e-15);
 }
 
 TEST(PaddleSignal, VelocityIsTheRateOfTheDisplacementThroughTheRamp) {
