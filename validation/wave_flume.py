@@ -1,16 +1,16 @@
 #!/usr/bin/python3
 """F8: waves from a paddle against linear wavemaker theory, with the grid model (mac) and wcsph.
 
-Runs cases/wave_flume_2d.yaml (water 0.5 m deep) re-laid for each wave: regular waves of
-steepness H/L = 0.02 at kh = 0.5, 1 and 2, from a piston (Biésel's stroke with Madsen's 1971
-second order) and from a flap hinged at the bed (Biésel, first order), the paddle's face at
-x = 0.2 m, gauges two wavelengths from it and a quarter wavelength beyond, and a damping zone
-from 2.5 to 4 wavelengths (the flume's end). From the last five periods of each run: the
-incident height and the reflection coefficient (Goda & Suzuki 1976) from the two gauges'
-harmonics at the wave's frequency. And a JONSWAP sea (H_m0 0.04 m, T_p 1.6 s, gamma 3.3, 64
-components that repeat after 41 s) from the piston, its H_m0 and T_p at a gauge 3 m from the
-paddle over one whole repeat. Writes docs/validation.md's tables f8-regular and f8-jonswap and
-docs/img/f8_waves.png. Each run's probes.csv is kept in validation/results/.
+Runs cases/wave_flume_2d.yaml (water 0.5 m deep) re-laid for each wave: regular waves of steepness
+H/L = 0.02 at kh = 0.5, 1 and 2, from a piston (Biésel's stroke with Madsen's 1971 second order)
+and from a flap hinged at the bed (Biésel's with Schäffer's 1996 second order), the paddle's face
+at x = 0.2 m, gauges two wavelengths from it and a quarter wavelength beyond, and a damping zone
+from 2.5 to 4 wavelengths (the flume's end). From the last five periods of each run: the incident
+height and the reflection coefficient (Goda & Suzuki 1976) from the two gauges' harmonics at the
+wave's frequency. And a JONSWAP sea (H_m0 0.04 m, T_p 1.6 s, gamma 3.3, 64 components that repeat
+after 41 s) from the piston, its H_m0 and T_p at a gauge 3 m from the paddle over one whole repeat.
+Writes docs/validation.md's tables f8-regular and f8-jonswap and docs/img/f8_waves.png. Each run's
+probes.csv is kept in validation/results/.
 
 usage: /usr/bin/python3 validation/wave_flume.py [--no-run] [--runs piston@1@0.02[@MODEL],...]
 (MODEL: mac unless named; wcsph, mps and penalty-sph take the same paddle and damping zone).
@@ -58,7 +58,7 @@ def regular_settings(paddle, kh, spacing):
             f"damping.0.from={FACE + 2.5 * length:.4f}", f"damping.0.to={end_x:.4f}",
             f"bodies.0.prescribed.paddle={paddle}", f"bodies.0.prescribed.height={height:.6f}",
             f"bodies.0.prescribed.period={period:.6f}",
-            f"bodies.0.prescribed.order={2 if paddle == 'piston' else 1}",
+            "bodies.0.prescribed.order=2",
             f"probes.1.point=[{x1:.4f}, 0]", f"probes.2.point=[{x2:.4f}, 0]",
             f"output_interval={end / 4:.4f}"]
     return sets, end
@@ -157,7 +157,7 @@ def main():
              "crest to trough [m] | from target | incident, 1st harmonic [m] | from target | "
              "reflection | steps | wall time |", "|---" * 13 + "|"]
     for paddle, kh, spacing, model, f, s in regular:
-        order = "piston, 2nd order" if paddle == "piston" else "flap, 1st order"
+        order = f"{paddle}, 2nd order"
         if "diverged" in f:
             lines.append(f"| `{model}` | {order} | {kh:g} | | {spacing:g} m | {f['target']:.4f} | "
                          f"diverged at t = {f['diverged']:.2f} s | | | | | | |")
