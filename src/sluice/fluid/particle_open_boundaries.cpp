@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace sluice {
 
@@ -165,15 +166,18 @@ void ParticleOpenBoundaries<D>::extrapolate_outlet_velocity(
     count[static_cast<std::size_t>(k++)] =
         std::max(1, static_cast<int>(std::ceil((domain_.max[b3] - domain_.min[b3]) / width)));
   }
+  // The square of x, or -1 for a point beyond the domain across the flow (a periodic axis's
+  // image of the water on the other side, which that water's own square counts already).
   auto square_of = [&](const Vec<D>& x) {
-    std::size_t square = 0;
+    std::ptrdiff_t square = 0;
     for (int k = 0; k < D - 1; ++k) {
       const int b = across[static_cast<std::size_t>(k)];
       const int b3 = D == 3 ? b : 2 * b;
+      if (x[b] < domain_.min[b3] || x[b] > domain_.max[b3]) return std::ptrdiff_t{-1};
       const int n = count[static_cast<std::size_t>(k)];
       const int at =
-          std::clamp(static_cast<int>(std::floor((x[b] - domain_.min[b3]) / width)), 0, n - 1);
-      square = square * static_cast<std::size_t>(n) + static_cast<std::size_t>(at);
+          std::min(static_cast<int>(std::floor((x[b] - domain_.min[b3]) / width)), n - 1);
+      square = square * n + at;
     }
     return square;
   };
@@ -184,15 +188,18 @@ void ParticleOpenBoundaries<D>::extrapolate_outlet_velocity(
     if (!ps.is_fluid(i)) continue;
     const Real beyond = beyond_inner_face(side, ps.position[i]);
     if (beyond > 0 || beyond < -width) continue;
-    const std::size_t square = square_of(ps.position[i]);
-    sum[square] += ps.velocity[i];
-    ++found[square];
+    const std::ptrdiff_t square = square_of(ps.position[i]);
+    if (square < 0) continue;
+    sum[static_cast<std::size_t>(square)] += ps.velocity[i];
+    ++found[static_cast<std::size_t>(square)];
   }
   const auto own = static_cast<std::int32_t>(index + 1);
   for (std::size_t i = 0; i < ps.size(); ++i) {
     if (ps[zone][i] != own || (owned && ps[*owned][i] < 0)) continue;
-    const std::size_t square = square_of(ps.position[i]);
-    if (found[square] > 0) ps.velocity[i] = sum[square] / found[square];
+    const std::ptrdiff_t square = square_of(ps.position[i]);
+    if (square < 0) continue;
+    const auto s = static_cast<std::size_t>(square);
+    if (found[s] > 0) ps.velocity[i] = sum[s] / found[s];
   }
 }
 

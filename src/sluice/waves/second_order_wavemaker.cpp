@@ -19,7 +19,7 @@ std::vector<Complex> wavenumbers(double omega, double depth, double gravity, int
   const double w2 = omega * omega;
   for (int j = 1; j <= modes; ++j) {
     double lo = (j - 0.5) * std::numbers::pi / depth, hi = j * std::numbers::pi / depth;
-    // Bisection to the last bit: 60 halvings of an interval of pi / h.
+    // Bisection to the last bit: 60 halvings of an interval of pi / (2 h).
     for (int step = 0; step < 60; ++step) {
       const double mid = 0.5 * (lo + hi);
       (w2 + gravity * mid * std::tan(mid * depth) < 0 ? lo : hi) = mid;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <utility>
 
 #include "sluice/waves/jonswap.hpp"
 #include "sluice/waves/linear_waves.hpp"
@@ -99,6 +100,16 @@ TEST(SecondOrderWavemaker, FlapMatchesTheReferenceSums) {
     const std::complex<double> f = schaffer_second_order(omega, h, h, kG);
     EXPECT_NEAR(f.real(), row.f.real(), 2e-6 * std::abs(row.f)) << "kh " << row.kh;
     EXPECT_NEAR(f.imag(), row.f.imag(), 2e-6 * std::abs(row.f)) << "kh " << row.kh;
+  }
+  // Hinged 0.2 m above the bed (the part below it still) and 0.3 m below it, at kh = 1 (the
+  // notes' section 3.4).
+  const double omega = angular_frequency(1 / h, h, kG);
+  for (const auto& [hinge, expected] :
+       {std::pair{0.3, std::complex<double>{-6.247943, -3.502204}},
+        std::pair{0.8, std::complex<double>{-0.125155, -0.118720}}}) {
+    const std::complex<double> f = schaffer_second_order(omega, h, hinge, kG);
+    // 2e-6 of it, and the table's sixth decimal.
+    EXPECT_NEAR(std::abs(f - expected), 0, 2e-6 * std::abs(expected) + 1e-6) << "hinge " << hinge;
   }
 }
 

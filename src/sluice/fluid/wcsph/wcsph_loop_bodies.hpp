@@ -24,7 +24,6 @@ namespace sluice {
 inline constexpr int kRatesRangeMultiple = 1;
 #else
 inline constexpr int kRatesRangeMultiple = 8;
-
 #endif
 
 // The second half kick of kick-drift-kick: velocity and density from their half-step values
