@@ -38,7 +38,7 @@ struct WavemakerConfig {
   double height = 0;              // regular: H [m]
   double period = 0;              // regular: T [s]; irregular: the peak period
   double significant_height = 0;  // irregular: H_m0 [m]
-  int order = 1;                  // regular piston: 2 adds Madsen's (1971) second harmonic
+  int order = 1;                  // regular: 2 adds Madsen's (piston) or Schäffer's (flap)
   waves::PaddleSignal signal;
   // Active absorption (sim/paddle_absorber.hpp): the paddle adds absorption_gain [1/s] times
   // (`signal`'s elevation at its face less the water's there) to its velocity.

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <complex>
-#include <numbers>
 
 #include "sluice/core/smooth_ramp.hpp"
 #include "sluice/waves/linear_waves.hpp"
