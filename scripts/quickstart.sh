@@ -6,4 +6,5 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake --preset release
 cmake --build --preset release
+bash scripts/python_path.sh
 ./build/release/sluice run cases/dam_break_3d.yaml --out out/dam_break_3d

@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libhypre-dev libopenmpi-dev openmpi-bin zlib1g-dev
   libtrilinos-zoltan-dev
   clang-format clang libclang-rt-14-dev
-  python3 python3-vtk9 python3-numpy python3-matplotlib
+  python3 python3-vtk9 python3-numpy python3-matplotlib python3-dev pybind11-dev python3-pytest
 )
 
 missing=()

@@ -17,15 +17,16 @@ stage() {
 }
 
 stage "format check"
-bad=$(find src apps tests bench -name '*.cpp' -o -name '*.hpp' -o -name '*.cu' -o -name '*.cuh' | xargs clang-format --dry-run -Werror 2>&1 | grep -c 'error:' || true)
+bad=$(find src apps tests bench python -name '*.cpp' -o -name '*.hpp' -o -name '*.cu' -o -name '*.cuh' | xargs clang-format --dry-run -Werror 2>&1 | grep -c 'error:' || true)
 if [ "$bad" != "0" ]; then
-  find src apps tests bench -name '*.cpp' -o -name '*.hpp' -o -name '*.cu' -o -name '*.cuh' | xargs clang-format --dry-run -Werror
+  find src apps tests bench python -name '*.cpp' -o -name '*.hpp' -o -name '*.cu' -o -name '*.cuh' | xargs clang-format --dry-run -Werror
   exit 1
 fi
 
 stage "release build and tests"
 cmake --preset release
 cmake --build --preset release -j "$jobs"
+bash scripts/python_path.sh
 ctest --preset release -j "$jobs"
 
 # The slowest physics checks (a minute or more each: the falling cube, the granular column

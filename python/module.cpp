@@ -1,0 +1,12 @@
+// The compiled part of the `sluice` Python package (python/sluice/__init__.py): thin bindings
+// of the library's case, run and outputs; the package adds nothing the library does not do.
+#include <pybind11/pybind11.h>
+
+#include "case_binding.hpp"
+#include "simulation_binding.hpp"
+
+PYBIND11_MODULE(_sluice, m) {
+  m.doc() = "sluice's engine: cases, simulations stepped from Python, their fields and loads.";
+  sluice::python::bind_case(m);
+  sluice::python::bind_simulation(m);
+}

@@ -1,0 +1,267 @@
+// sluice.Simulation: a case's run (sim/case_run.hpp) that a script steps, reads and stops, with
+// its outputs written as the command line writes them.
+#include "simulation_binding.hpp"
+
+#include <omp.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "field_arrays.hpp"
+#include "sluice/core/errors.hpp"
+#include "sluice/coupling/coupler.hpp"
+#include "sluice/exec/policy.hpp"
+#include "sluice/fluid/fluid_observation.hpp"
+#include "sluice/linear/hypre_session.hpp"
+#include "sluice/sim/case_run.hpp"
+#include "sluice/sim/rigid_bodies.hpp"
+
+namespace py = pybind11;
+
+namespace sluice::python {
+
+namespace {
+
+// The process's MPI and hypre, started when a solve first asks, stopped when Python exits.
+HypreSession& hypre_session() {
+  static HypreSession* session = [] {
+    auto* s = new HypreSession;  // left to the exit handler, not to static destruction
+    py::module_::import("atexit").attr("register")(py::cpp_function([s] { s->finish(); }));
+    return s;
+  }();
+  return *session;
+}
+
+// OpenMP's thread count is the calling thread's: each simulation sets its own while it steps.
+class ThreadCount {
+ public:
+  explicit ThreadCount(int threads) : before_(exec::thread_count()) {
+    exec::set_thread_count(threads);
+  }
+  ~ThreadCount() { exec::set_thread_count(before_); }
+  ThreadCount(const ThreadCount&) = delete;
+  ThreadCount& operator=(const ThreadCount&) = delete;
+
+ private:
+  int before_;
+};
+
+class Simulation {
+ public:
+  Simulation(const io::CaseConfig& config, std::optional<std::string> out, int threads,
+             std::optional<double> end, bool resume, bool progress)
+      : threads_(threads > 0 ? threads : omp_get_num_procs()) {
+    RunOptions options;
+    options.out_dir = out.value_or("out/" + config.name);
+    options.end_time = end;
+    options.resume = resume;
+    options.quiet = !progress;
+    options.hypre = &hypre_session();
+    const ThreadCount count(threads_);
+    run_ = std::make_unique<CaseRun>(config, options);
+  }
+
+  double time() const { return run_->time(); }
+  long steps() const { return run_->step_count(); }
+  int threads() const { return threads_; }
+  const CaseRun& run() const { return *run_; }
+
+  // One step, not past `until` (the end, by default).
+  void step(std::optional<double> until) {
+    const double limit = until.value_or(run_->end_time());
+    check_until(limit);
+    if (run_->finished()) throw py::value_error("the run is at its end time");
+    const ThreadCount count(threads_);
+    const py::gil_scoped_release free_python;
+    run_->step(limit);
+  }
+
+  // Steps to `until`, calling `callback(self)` every `every` simulated seconds (at each multiple
+  // of it, which the steps land on) and checking between steps for Ctrl-C.
+  void run_to(py::object self, std::optional<double> until, std::optional<double> every,
+              const py::object& callback) {
+    const double limit = until.value_or(run_->end_time());
+    check_until(limit);
+    if (every && !(*every > 0)) throw py::value_error("every must be above 0 s");
+    if (every && callback.is_none()) throw py::value_error("every needs a callback");
+    const double tolerance = 1e-12 * std::max(1.0, limit);
+    double next_call = every ? next_multiple(time(), *every) : limit;
+    while (time() < limit - tolerance) {
+      {
+        const ThreadCount count(threads_);
+        const py::gil_scoped_release free_python;
+        run_->step(std::min(limit, next_call));
+      }
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if (every && time() >= next_call - tolerance) {
+        callback(self);
+        next_call = next_multiple(time(), *every);
+      }
+    }
+    if (!every && !callback.is_none()) callback(self);
+  }
+
+  void save() {
+    const ThreadCount count(threads_);
+    run_->write_checkpoint();
+  }
+
+ private:
+  static double next_multiple(double time, double interval) {
+    return (std::floor(time / interval + 1e-9) + 1) * interval;
+  }
+  void check_until(double until) const {
+    if (until > run_->end_time() * (1 + 1e-12)) {
+      throw py::value_error("until is past the run's end time (" +
+                            std::to_string(run_->end_time()) +
+                            " s): give the Simulation a later end");
+    }
+  }
+
+  int threads_;
+  std::unique_ptr<CaseRun> run_;
+};
+
+py::dict bodies_of(const CaseRun& run) {
+  py::dict out;
+  const RigidBodies& bodies = run.bodies();
+  const auto& force = run.coupler().fluid_force();
+  const auto& moment = run.coupler().fluid_moment();
+  for (std::size_t b = 0; b < bodies.count(); ++b) {
+    const RigidBody& s = bodies.state(b);
+    const Eigen::Quaterniond q = bodies.shape_orientation(b);
+    py::dict body;
+    body["position"] = vector_array(s.position);
+    body["orientation"] = vector_array(Vec3(q.x(), q.y(), q.z()), q.w());
+    body["velocity"] = vector_array(s.velocity);
+    body["angular_velocity"] = vector_array(s.inverse_world_inertia() * s.angular_momentum);
+    body["fluid_force"] = vector_array(b < force.size() ? force[b] : Vec3::Zero());
+    body["fluid_moment"] = vector_array(b < moment.size() ? moment[b] : Vec3::Zero());
+    body["mass"] = s.mass;
+    out[py::str(bodies.config(b).name)] = body;
+  }
+  return out;
+}
+
+py::dict summary_of(const RunSummary& r) {
+  py::dict out;
+  out["steps"] = r.steps;
+  out["simulated_time"] = r.simulated_time;
+  out["wall_seconds"] = r.wall_seconds;
+  out["particles"] = r.particles;
+  out["fluid_particles"] = r.fluid_particles;
+  out["particle_steps_per_second"] = r.particle_steps_per_second();
+  out["threads"] = r.threads;
+  out["frames"] = r.frames;
+  out["checkpoints"] = r.checkpoints;
+  py::dict stages;
+  for (const auto& e : r.stages) stages[py::str(e.name)] = e.seconds;
+  out["stage_seconds"] = stages;
+  return out;
+}
+
+}  // namespace
+
+void bind_simulation(py::module_& m) {
+  py::register_exception<DivergenceError>(m, "DivergenceError", PyExc_RuntimeError)
+      .attr("__doc__") =
+      "The run went wrong (non-finite values, water or a body out of the domain, a step that "
+      "collapsed); the last good state is the last frame written. The simulation is of no "
+      "further use.";
+  py::class_<Simulation>(m, "Simulation", R"doc(
+A case's run, stepped from Python. It writes what `sluice run` writes (frames, probes.csv, the
+bodies' files, checkpoints) into `out` (default out/CASE_NAME) on the case's schedule.
+
+    sim = sluice.Simulation(case, threads=2)
+    sim.run(until=0.5, every=0.1, callback=lambda s: print(s.time, s.probes()))
+
+`threads` is this simulation's thread count (0: every core), set while it steps and put back
+after. `end` overrides the case's end_time; `resume=True` goes on from the newest checkpoint in
+`out` (Simulation.resume). Bad input raises sluice.InputError, a run gone wrong
+sluice.DivergenceError.)doc")
+      .def(py::init<const io::CaseConfig&, std::optional<std::string>, int, std::optional<double>,
+                    bool, bool>(),
+           py::arg("case"), py::arg("out") = py::none(), py::arg("threads") = 0,
+           py::arg("end") = py::none(), py::arg("resume") = false, py::arg("progress") = false)
+      .def_static(
+          "resume",
+          [](const io::CaseConfig& config, const std::string& out, int threads,
+             std::optional<double> end) {
+            return std::make_unique<Simulation>(config, out, threads, end, true, false);
+          },
+          py::arg("case"), py::arg("out"), py::arg("threads") = 0, py::arg("end") = py::none(),
+          "Goes on with `case` from the newest checkpoint in `out` (InputError when none fits "
+          "the case).")
+      .def_property_readonly("time", &Simulation::time, "The simulated time [s].")
+      .def_property_readonly("steps", &Simulation::steps, "Steps from the case's start.")
+      .def_property_readonly("threads", &Simulation::threads)
+      .def_property_readonly("end_time", [](const Simulation& s) { return s.run().end_time(); })
+      .def_property_readonly("out", [](const Simulation& s) { return s.run().out_dir(); })
+      .def_property_readonly("dimension", [](const Simulation& s) { return s.run().dimension(); })
+      .def("step", &Simulation::step, py::arg("until") = py::none(),
+           "One step of the model's stable size, landing on the next output time and not past "
+           "`until` (default: the end time).")
+      .def(
+          "run",
+          [](py::object self, std::optional<double> until, std::optional<double> every,
+             const py::object& callback) {
+            self.cast<Simulation&>().run_to(self, until, every, callback);
+          },
+          py::arg("until") = py::none(), py::arg("every") = py::none(),
+          py::arg("callback") = py::none(),
+          "Steps to `until` (default: the end time). With `every` [simulated s], calls "
+          "callback(sim) at each multiple of it; without, once at the end where one is given. "
+          "An exception the callback raises stops the run there and propagates; the simulation "
+          "stays at its last whole step and can go on.")
+      .def("save", &Simulation::save,
+           "Writes a checkpoint now into OUT/checkpoints (Simulation.resume reads it).")
+      .def(
+          "fields",
+          [](py::object self, bool copy) {
+            return fields_of(self.cast<Simulation&>().run().fluid().view(), self, copy);
+          },
+          py::arg("copy") = false, R"doc(
+The fluid's fields at its points (particles; a grid model's free surface) as numpy arrays, by
+name, 'position' among them: (n,) or (n, components); a 2D case's vectors hold (x, z).
+Without copy they view the model's own arrays, read-only, and hold only until the next step:
+the cell sort reorders the particles and the arrays may move. Keep `copy=True` ones.)doc")
+      .def(
+          "grid_fields",
+          [](py::object self, bool copy) {
+            return grid_fields_of(self.cast<Simulation&>().run().fluid().view(), self, copy);
+          },
+          py::arg("copy") = false,
+          "A grid model's (mac) cell fields as arrays shaped (nz, ny, nx[, components]), with "
+          "'origin' and 'spacing'; None for a particle model.")
+      .def(
+          "probes",
+          [](const Simulation& s) {
+            py::dict out;
+            const auto labels = s.run().probe_labels();
+            const auto values = s.run().probe_values();
+            for (std::size_t k = 0; k < labels.size(); ++k) out[py::str(labels[k])] = values[k];
+            return out;
+          },
+          "Each probe's reading now, by its probes.csv label ('P1 [Pa]').")
+      .def(
+          "bodies", [](const Simulation& s) { return bodies_of(s.run()); },
+          "Each body by name: position (its centre of mass), orientation (x, y, z, w), velocity, "
+          "angular_velocity, the fluid's force and moment (about the centre of mass) as held "
+          "over the last step, and mass; vectors in 3D (a 2D case's y is 0).")
+      .def(
+          "summary", [](const Simulation& s) { return summary_of(s.run().summary()); },
+          "What the run did so far: steps, wall seconds, particle-steps per second and the "
+          "stages' seconds, as --stats writes them.")
+      .def("__repr__", [](const Simulation& s) {
+        return "<sluice.Simulation '" + s.run().config().name +
+               "' at t = " + std::to_string(s.time()) + " s, step " + std::to_string(s.steps()) +
+               ">";
+      });
+}
+
+}  // namespace sluice::python

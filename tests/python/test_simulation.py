@@ -1,0 +1,141 @@
+"""sluice.Simulation: stepping, callbacks, fields, probes, bodies, checkpoints, errors."""
+import csv
+import os
+import subprocess
+
+import numpy as np
+import pytest
+import sluice
+from conftest import ROOT, case_path
+
+
+def test_steps_and_runs_to_a_time(small_dam_break, tmp_path):
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path), threads=1)
+    assert (sim.time, sim.steps, sim.threads, sim.dimension) == (0.0, 0, 1, 2)
+    sim.step()
+    assert sim.steps == 1 and 0 < sim.time < 0.02
+    sim.run(until=0.05)
+    assert sim.time == pytest.approx(0.05, abs=1e-12)
+    sim.run()
+    assert sim.time == pytest.approx(sim.end_time, abs=1e-12)
+    assert os.path.exists(os.path.join(str(tmp_path), "dam_break_2d.pvd"))
+    with pytest.raises(ValueError):
+        sim.step()
+
+
+def test_calls_back_every_interval(small_dam_break, tmp_path):
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path), threads=1)
+    times = []
+    sim.run(every=0.03, callback=lambda s: times.append(s.time))
+    np.testing.assert_allclose(times, [0.03, 0.06, 0.09], atol=1e-12)
+
+
+def test_a_callback_that_raises_stops_the_run_at_a_whole_step(small_dam_break, tmp_path):
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path), threads=1)
+
+    def stop(s):
+        raise KeyError("stop here")
+
+    with pytest.raises(KeyError):
+        sim.run(every=0.02, callback=stop)
+    assert sim.time == pytest.approx(0.02, abs=1e-12)
+    sim.run(until=0.04)  # and it goes on
+    assert sim.time == pytest.approx(0.04, abs=1e-12)
+
+
+def test_until_past_the_end_is_refused(small_dam_break, tmp_path):
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path), threads=1)
+    with pytest.raises(ValueError):
+        sim.run(until=5.0)
+    with pytest.raises(ValueError):
+        sim.run(every=0)
+
+
+def test_fields_view_the_particles_read_only(small_dam_break, tmp_path):
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path), threads=1)
+    sim.run(until=0.02)
+    fields = sim.fields()
+    position, pressure = fields["position"], fields["pressure"]
+    assert position.shape[0] == pressure.shape[0] > 800
+    assert not position.flags.writeable and not position.flags.owndata
+    with pytest.raises(ValueError):
+        pressure[0] = 1.0
+    kind = fields["kind"]
+    water = kind == 0
+    assert water.sum() == 800
+    # The water stays in the tank, under the column's top.
+    assert position[water].min() >= -1e-9 and position[water, -1].max() < 2.0
+    copied = sim.fields(copy=True)
+    assert copied["pressure"].flags.writeable
+    np.testing.assert_array_equal(copied["pressure"], pressure)
+    assert sim.grid_fields() is None
+
+
+def test_probes_read_as_the_csv_labels_them(small_dam_break, tmp_path):
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path), threads=1)
+    sim.run(until=0.05)
+    probes = sim.probes()
+    assert list(probes) == ["front [m]", "gauge_left [m]", "right_wall [Pa]"]
+    assert 1.0 < probes["front [m]"] < 1.5
+
+
+def test_the_same_answer_as_the_command_line(small_dam_break, tmp_path):
+    """The Python loop takes the command line's steps: the same probes.csv, to the digit."""
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path / "python"), threads=1)
+    sim.run(every=0.01, callback=lambda s: s.probes())
+    sluice_cli = os.environ.get("SLUICE_EXECUTABLE",
+                                os.path.join(ROOT, "build", "release", "sluice"))
+    subprocess.run([sluice_cli, "run", case_path("dam_break_2d"), "--set", "spacing=0.05",
+                    "--set", "end_time=0.1", "--threads", "1", "--out", str(tmp_path / "cli")],
+                   check=True, capture_output=True)
+    with open(tmp_path / "python" / "probes.csv") as a, open(tmp_path / "cli" / "probes.csv") as b:
+        assert list(csv.reader(a)) == list(csv.reader(b))
+
+
+def test_bodies_and_their_loads(tmp_path):
+    case = sluice.Case.from_yaml(case_path("floating_box_2d"), set={"end_time": 0.02})
+    sim = sluice.Simulation(case, out=str(tmp_path), threads=1)
+    sim.run()
+    bodies = sim.bodies()
+    assert len(bodies) == 1
+    box = next(iter(bodies.values()))
+    assert box["position"].shape == (3,) and box["orientation"].shape == (4,)
+    assert box["mass"] > 0
+    # Floating: the water holds up about its weight (within the start's transient).
+    assert box["fluid_force"][2] > 0
+
+
+def test_a_checkpoint_resumes_to_the_same_state(small_dam_break, tmp_path):
+    first = sluice.Simulation(small_dam_break, out=str(tmp_path / "a"), threads=1)
+    first.run(until=0.04)
+    first.save()
+    first.run()
+    resumed = sluice.Simulation.resume(small_dam_break, str(tmp_path / "a"), threads=1)
+    assert resumed.time == pytest.approx(0.04, abs=1e-12)
+    resumed.run()
+    np.testing.assert_array_equal(resumed.fields(copy=True)["position"],
+                                  first.fields(copy=True)["position"])
+
+
+def test_resuming_without_a_checkpoint_is_bad_input(small_dam_break, tmp_path):
+    with pytest.raises(sluice.InputError):
+        sluice.Simulation.resume(small_dam_break, str(tmp_path / "empty"))
+
+
+def test_a_run_that_goes_wrong_raises(tmp_path):
+    case = sluice.Case.from_yaml(os.path.join(ROOT, "tests", "cli", "diverging", "escape.yaml"))
+    sim = sluice.Simulation(case, out=str(tmp_path), threads=1)
+    with pytest.raises(sluice.DivergenceError, match="left the domain"):
+        sim.run()
+
+
+def test_a_grid_model_shows_its_cells(tmp_path):
+    case = sluice.Case.from_yaml(case_path("dam_break_2d"),
+                                 set={"model": {"name": "mac", "cell_size": 0.1},
+                                      "end_time": 0.02})
+    sim = sluice.Simulation(case, out=str(tmp_path), threads=1)
+    sim.run()
+    grid = sim.grid_fields()
+    assert grid["spacing"] == pytest.approx(0.1)
+    names = [k for k in grid if k not in ("origin", "spacing")]
+    assert names and all(grid[k].shape[:3] == (30, 1, 40) for k in names)
