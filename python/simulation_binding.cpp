@@ -6,11 +6,14 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "field_arrays.hpp"
 #include "sluice/core/errors.hpp"
@@ -72,14 +75,26 @@ class Simulation {
   const CaseRun& run() const { return *run_; }
 
   // One step, not past `until` (the end, by default).
-  void step(std::optional<double> until) {
+  void step(py::object self, std::optional<double> until) {
     const double limit = until.value_or(run_->end_time());
     check_until(limit);
     if (run_->finished()) throw py::value_error("the run is at its end time");
-    const ThreadCount count(threads_);
-    const py::gil_scoped_release free_python;
-    run_->step(limit);
+    one_step(self, limit);
   }
+
+  // Body `name`'s velocity from `controller(sim)` before every step (None: no longer).
+  void drive(const std::string& name, const py::object& controller) {
+    const std::size_t b = body_index(name);
+    std::erase_if(controllers_, [&](const auto& c) { return c.first == b; });
+    if (controller.is_none()) return;
+    if (run_->config().bodies[b].motion != io::BodyMotion::kPrescribed) {
+      throw py::value_error("body '" + name +
+                            "' is not prescribed: only a body whose motion is prescribed can "
+                            "be driven (motion: prescribed in the case)");
+    }
+    controllers_.emplace_back(b, controller);
+  }
+  double controller_seconds() const { return controller_seconds_; }
 
   // Steps to `until`, calling `callback(self)` every `every` simulated seconds (at each multiple
   // of it, which the steps land on) and checking between steps for Ctrl-C.
@@ -92,11 +107,7 @@ class Simulation {
     const double tolerance = 1e-12 * std::max(1.0, limit);
     double next_call = every ? next_multiple(time(), *every) : limit;
     while (time() < limit - tolerance) {
-      {
-        const ThreadCount count(threads_);
-        const py::gil_scoped_release free_python;
-        run_->step(std::min(limit, next_call));
-      }
+      one_step(self, std::min(limit, next_call));
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       if (every && time() >= next_call - tolerance) {
         callback(self);
@@ -112,6 +123,45 @@ class Simulation {
   }
 
  private:
+  // The controllers' velocities, then a step without the GIL.
+  void one_step(const py::object& self, double until) {
+    if (!controllers_.empty()) {
+      const auto start = std::chrono::steady_clock::now();
+      for (const auto& [b, controller] : controllers_) {
+        const auto [velocity, angular_velocity] = commanded(controller(self));
+        run_->command_velocity(b, velocity, angular_velocity);
+      }
+      controller_seconds_ +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    const ThreadCount count(threads_);
+    const py::gil_scoped_release free_python;
+    run_->step(until);
+  }
+  // A controller's answer: a velocity, or (velocity, angular velocity); 3 components each, or
+  // for a 2D case's velocity 2 (x, z).
+  std::pair<Vec3, Vec3> commanded(const py::object& answer) const {
+    const auto vector = [&](const py::handle& h, bool plane) {
+      const auto values = py::cast<std::vector<double>>(h);
+      if (values.size() == 3) return Vec3(values[0], values[1], values[2]);
+      if (values.size() == 2 && plane) return Vec3(values[0], 0, values[1]);
+      throw py::value_error(
+          "a controller gives a velocity of 3 components (2 in 2D: x, z), or "
+          "a pair (velocity, angular velocity)");
+    };
+    const bool pair = PySequence_Check(answer.ptr()) == 1 && py::len(answer) == 2 &&
+                      PySequence_Check(answer[py::int_(0)].ptr()) == 1;
+    const bool plane = run_->dimension() == 2;
+    if (pair) return {vector(answer[py::int_(0)], plane), vector(answer[py::int_(1)], false)};
+    return {vector(answer, plane), Vec3::Zero()};
+  }
+  std::size_t body_index(const std::string& name) const {
+    const auto& bodies = run_->config().bodies;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (bodies[b].name == name) return b;
+    }
+    throw py::key_error("no body named '" + name + "'");
+  }
   static double next_multiple(double time, double interval) {
     return (std::floor(time / interval + 1e-9) + 1) * interval;
   }
@@ -125,6 +175,8 @@ class Simulation {
 
   int threads_;
   std::unique_ptr<CaseRun> run_;
+  std::vector<std::pair<std::size_t, py::object>> controllers_;  // body, controller(sim)
+  double controller_seconds_ = 0;                                // spent in the controllers
 };
 
 py::dict bodies_of(const CaseRun& run) {
@@ -203,9 +255,21 @@ sluice.DivergenceError.)doc")
       .def_property_readonly("end_time", [](const Simulation& s) { return s.run().end_time(); })
       .def_property_readonly("out", [](const Simulation& s) { return s.run().out_dir(); })
       .def_property_readonly("dimension", [](const Simulation& s) { return s.run().dimension(); })
-      .def("step", &Simulation::step, py::arg("until") = py::none(),
-           "One step of the model's stable size, landing on the next output time and not past "
-           "`until` (default: the end time).")
+      .def(
+          "step",
+          [](py::object self, std::optional<double> until) {
+            self.cast<Simulation&>().step(self, until);
+          },
+          py::arg("until") = py::none(),
+          "One step of the model's stable size, landing on the next output time and not past "
+          "`until` (default: the end time).")
+      .def("drive", &Simulation::drive, py::arg("body"), py::arg("controller"), R"doc(
+Drives prescribed body `body` from Python: before every step, controller(sim) gives its velocity
+(of its centre of mass) as 3 numbers (2 in 2D: x, z), or a pair (velocity, angular velocity
+[rad/s]); the body moves on from where it stands at that velocity over the step, in place of the
+case's motion. None stops calling it (the body keeps its last velocity). KeyError for an unknown
+body, ValueError for one whose motion is not prescribed. summary()['controller_seconds'] is the
+time spent in the controllers.)doc")
       .def(
           "run",
           [](py::object self, std::optional<double> until, std::optional<double> every,
@@ -254,7 +318,12 @@ the cell sort reorders the particles and the arrays may move. Keep `copy=True` o
           "angular_velocity, the fluid's force and moment (about the centre of mass) as held "
           "over the last step, and mass; vectors in 3D (a 2D case's y is 0).")
       .def(
-          "summary", [](const Simulation& s) { return summary_of(s.run().summary()); },
+          "summary",
+          [](const Simulation& s) {
+            py::dict out = summary_of(s.run().summary());
+            out["controller_seconds"] = s.controller_seconds();
+            return out;
+          },
           "What the run did so far: steps, wall seconds, particle-steps per second and the "
           "stages' seconds, as --stats writes them.")
       .def("__repr__", [](const Simulation& s) {

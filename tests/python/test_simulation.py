@@ -139,3 +139,65 @@ def test_a_grid_model_shows_its_cells(tmp_path):
     assert grid["spacing"] == pytest.approx(0.1)
     names = [k for k in grid if k not in ("origin", "spacing")]
     assert names and all(grid[k].shape[:3] == (30, 1, 40) for k in names)
+
+
+def tank_with_a_paddle(motion="prescribed"):
+    """Water 0.3 m deep in a 2 m tank with a box held in it, prescribed (at rest) or free."""
+    body = {"name": "paddle", "shape": "box", "size": [0.1, 0.4], "density": 500,
+            "position": [0.4, 0.35], "motion": motion}
+    if motion == "prescribed":
+        body["prescribed"] = {"type": "constant_velocity"}
+    return sluice.Case({
+        "name": "paddle_tank", "dimension": 2, "spacing": 0.05, "end_time": 0.1,
+        "output_interval": 0.05, "domain": {"min": [0, 0], "max": [2, 0.8]},
+        "fluid": {"blocks": [{"min": [0.5, 0], "max": [2, 0.3]}]},
+        "walls": [{"type": "tank", "min": [0, 0], "max": [2, 0.8], "open": ["z+"]}],
+        "bodies": [body], "model": {"name": "wcsph"}})
+
+
+def test_a_controller_drives_a_prescribed_body(tmp_path):
+    sim = sluice.Simulation(tank_with_a_paddle(), out=str(tmp_path), threads=1)
+    start = sim.bodies()["paddle"]["position"].copy()
+    calls = []
+
+    def controller(s):
+        calls.append(s.time)
+        return [0.2, 0.0]  # 2D: (x, z)
+
+    sim.drive("paddle", controller)
+    sim.run()
+    paddle = sim.bodies()["paddle"]
+    assert len(calls) == sim.steps  # once before every step
+    np.testing.assert_allclose(paddle["velocity"], [0.2, 0, 0], atol=1e-12)
+    np.testing.assert_allclose(paddle["position"] - start, [0.2 * sim.time, 0, 0], atol=1e-9)
+    assert sim.summary()["controller_seconds"] > 0
+    sim.drive("paddle", None)  # stops calling it
+
+
+def test_a_controller_turns_a_body(tmp_path):
+    sim = sluice.Simulation(tank_with_a_paddle(), out=str(tmp_path), threads=1)
+    sim.drive("paddle", lambda s: ([0, 0, 0], [0, 0.5, 0]))
+    sim.run(until=0.05)
+    paddle = sim.bodies()["paddle"]
+    np.testing.assert_allclose(paddle["angular_velocity"], [0, 0.5, 0], atol=1e-9)
+    # Turned by 0.5 rad/s * 0.05 s about y: the quaternion's y is sin(angle / 2).
+    assert paddle["orientation"][1] == pytest.approx(np.sin(0.0125), abs=1e-9)
+
+
+def test_only_a_prescribed_body_is_driven(tmp_path):
+    sim = sluice.Simulation(tank_with_a_paddle("free"), out=str(tmp_path), threads=1)
+    with pytest.raises(ValueError, match="prescribed"):
+        sim.drive("paddle", lambda s: [0, 0])
+    with pytest.raises(KeyError):
+        sim.drive("no_such_body", lambda s: [0, 0])
+
+
+def test_a_controller_that_raises_stops_before_the_step(tmp_path):
+    sim = sluice.Simulation(tank_with_a_paddle(), out=str(tmp_path), threads=1)
+    sim.drive("paddle", lambda s: [1, 2, 3, 4])
+    with pytest.raises(ValueError, match="3 components"):
+        sim.step()
+    assert sim.steps == 0
+    sim.drive("paddle", lambda s: [0.1, 0])
+    sim.step()
+    assert sim.steps == 1

@@ -16,6 +16,7 @@
 #include "sluice/sim/divergence_guard.hpp"
 #include "sluice/sim/frame_output.hpp"
 #include "sluice/sim/probes.hpp"
+#include "sluice/sim/rigid_bodies.hpp"
 #include "sluice/sim/simulation.hpp"
 #include "sluice/sim/size_estimate.hpp"
 #include "sluice/sim/step_collapse.hpp"
@@ -286,6 +287,9 @@ const RigidBodies& CaseRun::bodies() const {
 }
 const Coupler& CaseRun::coupler() const {
   return sim_->coupler();
+}
+void CaseRun::command_velocity(std::size_t b, const Vec3& velocity, const Vec3& angular_velocity) {
+  sim_->bodies().command_velocity(b, time(), velocity, angular_velocity);
 }
 std::vector<std::string> CaseRun::probe_labels() const {
   return outputs_->probes->labels();

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sluice/core/types.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/sim/runner.hpp"
 
@@ -50,6 +51,9 @@ class CaseRun {
   const FluidObservation& fluid() const;
   const RigidBodies& bodies() const;
   const Coupler& coupler() const;
+  // From now on, prescribed body b moves on at `velocity` turning at `angular_velocity`
+  // (RigidBodies::command_velocity; std::invalid_argument for another body).
+  void command_velocity(std::size_t b, const Vec3& velocity, const Vec3& angular_velocity);
   // Each probe's column label ("front [m]") and its value now.
   std::vector<std::string> probe_labels() const;
   std::vector<double> probe_values() const;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "sluice/ccp/contact_rows.hpp"
 #include "sluice/contact/contact_body_builder.hpp"
@@ -221,6 +222,28 @@ double RigidBodies::penetration(std::size_t body_a, std::size_t body_b) const {
     }
   }
   return deepest;
+}
+
+void RigidBodies::command_velocity(std::size_t b, double time, const Vec3& velocity,
+                                   const Vec3& angular_velocity) {
+  if (b >= count() || configs_[b].motion != io::BodyMotion::kPrescribed) {
+    throw std::invalid_argument("only a body whose motion is prescribed can be driven");
+  }
+  SystemBody& body = system_.bodies()[b];
+  const RigidBody start = body.state;
+  body.prescribed = [start, time, velocity, angular_velocity](double t, RigidBody& state) {
+    const double elapsed = t - time;
+    const double angle = angular_velocity.norm() * elapsed;
+    const Eigen::Quaterniond turn =
+        angle > 0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, angular_velocity.normalized()))
+                  : Eigen::Quaterniond::Identity();
+    state.position = start.position + elapsed * velocity;
+    state.orientation = (turn * start.orientation).normalized();
+    state.velocity = velocity;
+    state.angular_momentum = state.world_inertia() * angular_velocity;
+    state.enforce_locks();
+  };
+  body.prescribed(time, body.state);
 }
 
 std::vector<BodyKinematics> RigidBodies::motion() const {

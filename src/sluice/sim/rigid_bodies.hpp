@@ -32,6 +32,13 @@ class RigidBodies final : public BodyGeometry {
   }
 
   long substeps() const { return system_.substeps_taken(); }
+  // From `time` on, prescribed body b moves on from where it stands at velocity `velocity` (of
+  // its centre of mass) turning at `angular_velocity` [rad/s], in place of its case's motion: a
+  // script's controller sets it before each step (python/). Throws std::invalid_argument for a
+  // body whose motion is not prescribed. Not kept in checkpoints: a resumed run follows the
+  // case's motion until it is commanded again.
+  void command_velocity(std::size_t b, double time, const Vec3& velocity,
+                        const Vec3& angular_velocity);
   // Checkpoints: the bodies' state and their contacts (shapes and joints come from the case),
   // and the paddles' absorption.
   void archive_state(StateArchive& a) {

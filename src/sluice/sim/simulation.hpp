@@ -30,6 +30,7 @@ class SteppedSimulation {
   virtual const FluidSystem& fluid() const = 0;
   virtual FluidSystem& fluid() = 0;
   virtual const RigidBodies& bodies() const = 0;
+  virtual RigidBodies& bodies() = 0;
   virtual const Coupler& coupler() const = 0;
   virtual StageTimers& timers() = 0;
   virtual const io::CaseConfig& config() const = 0;
@@ -63,6 +64,7 @@ class Simulation final : public SteppedSimulation {
   const FluidSystem& fluid() const override { return *fluid_; }
   FluidSystem& fluid() override { return *fluid_; }
   const RigidBodies& bodies() const override { return *bodies_; }
+  RigidBodies& bodies() override { return *bodies_; }
   const Coupler& coupler() const override { return coupler_; }
   const StageTimers& timers() const { return timers_; }
   StageTimers& timers() override { return timers_; }
