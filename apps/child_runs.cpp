@@ -124,18 +124,24 @@ std::string this_program() {
   return std::string(self, static_cast<std::size_t>(length));
 }
 
-void draw_plots(const std::string& script, const std::vector<std::string>& args) {
+std::optional<int> run_script(const std::string& script, const std::vector<std::string>& args) {
   const std::string path = std::string(SLUICE_SOURCE_DIR) + "/scripts/" + script;
   const std::string python = "/usr/bin/python3";
-  if (access(path.c_str(), R_OK) != 0 || access(python.c_str(), X_OK) != 0) {
-    fmt::print("plots: not drawn ({} or {} missing)\n", python, path);
-    return;
-  }
+  if (access(path.c_str(), R_OK) != 0 || access(python.c_str(), X_OK) != 0) return std::nullopt;
   std::vector<std::string> command{python, path};
   command.insert(command.end(), args.begin(), args.end());
   int status = 0;
-  if (waitpid(spawn(command), &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    fmt::print("plots: {} {} failed\n", python, path);
+  if (waitpid(spawn(command), &status, 0) < 0 || !WIFEXITED(status)) return std::nullopt;
+  return WEXITSTATUS(status);
+}
+
+void draw_plots(const std::string& script, const std::vector<std::string>& args) {
+  const std::optional<int> code = run_script(script, args);
+  if (!code) {
+    fmt::print("plots: not drawn (/usr/bin/python3 or scripts/{} missing, or it was stopped)\n",
+               script);
+  } else if (*code != 0) {
+    fmt::print("plots: scripts/{} failed\n", script);
   }
 }
 

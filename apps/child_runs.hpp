@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,13 @@ int threads_per_run(int jobs);
 // This program's path, to start the runs with.
 std::string this_program();
 
-// Runs `/usr/bin/python3 SLUICE_SOURCE_DIR/scripts/SCRIPT ARGS...` (Debian's matplotlib) when
-// both are there; says so on stdout when not, or when it fails.
+// Runs `/usr/bin/python3 SLUICE_SOURCE_DIR/scripts/SCRIPT ARGS...` (Debian's matplotlib) and
+// waits for it: its exit code, or nothing where python3 or the script is missing or it did not
+// exit.
+std::optional<int> run_script(const std::string& script, const std::vector<std::string>& args);
+
+// run_script, saying so on stdout when it could not run or failed: plots that a run's table
+// does without.
 void draw_plots(const std::string& script, const std::vector<std::string>& args);
 
 }  // namespace sluice

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -128,6 +129,21 @@ int main(int argc, char** argv) {
   sweep->add_option("--end", sweep_options.end_time, "end time of every run")
       ->check(sluice::positive_seconds());
 
+  std::vector<std::string> render_args(1);  // OUT, then the options as render.py reads them
+  std::string render_field, render_view;
+  int render_width = 0;
+  bool render_movie = false;
+  CLI::App* render = app.add_subcommand(
+      "render", "PNG pictures of a run's frames, and an MP4 with --movie (scripts/render.py)");
+  render->add_option("OUT", render_args[0], "a run's output directory")->required();
+  render->add_option("--field", render_field,
+                     "the field that colours the water (default: velocity)");
+  render->add_option("--view", render_view, "side (x-z, the default), top (x-y) or iso")
+      ->check(CLI::IsMember({"side", "top", "iso"}));
+  render->add_flag("--movie", render_movie, "an MP4 of the pictures too (ffmpeg)");
+  render->add_option("--width", render_width, "the pictures' width in pixels (default: 1280)")
+      ->check(CLI::Range(16, 16384));
+
   sluice::CompareOptions compare_options;
   CLI::App* compare = app.add_subcommand(
       "compare", "run a case with several fluid models; one table and plot of their answers");
@@ -156,6 +172,19 @@ int main(int argc, char** argv) {
     if (ranks.split() && (sweep->parsed() || compare->parsed())) {
       throw sluice::InputError(
           "sweep and compare start their runs themselves: start them without mpirun");
+    }
+    if (render->parsed()) {
+      if (!render_field.empty()) render_args.insert(render_args.end(), {"--field", render_field});
+      if (!render_view.empty()) render_args.insert(render_args.end(), {"--view", render_view});
+      if (render_width > 0)
+        render_args.insert(render_args.end(), {"--width", std::to_string(render_width)});
+      if (render_movie) render_args.emplace_back("--movie");
+      const std::optional<int> code = sluice::run_script("render.py", render_args);
+      if (!code) {
+        fmt::print(stderr, "error: render: /usr/bin/python3 or scripts/render.py is missing\n");
+        return sluice::kExitFailure;
+      }
+      return *code;
     }
     if (sweep->parsed()) {
       sweep_options.self = sluice::this_program();

@@ -10,6 +10,7 @@ packages=(
   libtrilinos-zoltan-dev
   clang-format clang libclang-rt-14-dev
   python3 python3-vtk9 python3-numpy python3-matplotlib python3-dev pybind11-dev python3-pytest
+  ffmpeg
 )
 
 missing=()

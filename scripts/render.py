@@ -1,0 +1,253 @@
+#!/usr/bin/python3
+"""`sluice render OUT`: PNG pictures of a run's frames, and with --movie an MP4 (ffmpeg).
+
+Reads the series OUT/CASE.pvd and draws each frame's points: the water coloured by a field
+(its magnitude, for a vector), walls light grey behind everything, bodies dark grey, seen from
+the side (x-z), the top (x-y) or an isometric corner, the nearest points drawn last. The points are splatted as
+discs into an image of their own (numpy), which matplotlib frames with the time and a colour
+bar: about a tenth of a second for 100,000 particles (docs/performance.md). The colour scale
+spans the field's 1st to 99th percentile over every frame's water, so that colours mean the same
+in every picture. A grid model's (mac) frames are drawn from its grid: the water's cells
+(level_set below 0) coloured by the field, the solid cells as walls.
+
+Writes OUT/render/FIELD_VIEW_NNNNNN.png, and with --movie OUT/render/FIELD_VIEW.mp4.
+Exit codes as sluice's: 2 for bad input (no series in OUT, an unknown field, no ffmpeg).
+
+usage: /usr/bin/python3 scripts/render.py OUT [--field F] [--view side|top|iso] [--movie]
+                                              [--width PIXELS] [--fps N]
+"""
+import argparse
+import glob
+import os
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ElementTree
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLPPolyDataReader,
+                                 vtkXMLPolyDataReader)
+
+WALL, BODY, BACKGROUND = (0.82, 0.82, 0.82), (0.35, 0.35, 0.38), (1.0, 1.0, 1.0)
+WATER = (0.16, 0.44, 0.78)  # where the frames hold no field
+AIR = -1  # a grid's cell that is neither water nor solid: framed, not drawn
+COS30, SIN30 = np.cos(np.pi / 6), np.sin(np.pi / 6)
+
+
+class BadInput(Exception):
+    pass
+
+
+def series(out):
+    """(case name, [(time, frame path)]) of the series in OUT."""
+    found = sorted(glob.glob(os.path.join(out, "*.pvd")))
+    if not found:
+        raise BadInput(f"{out}: no run's series (CASE.pvd) here")
+    root = ElementTree.parse(found[0]).getroot()
+    # A grid model's series lists its grid (.vti) beside each surface (.vtp): the grid, whose
+    # cells hold the fields, stands for the time.
+    by_time = {}
+    for d in root.iter("DataSet"):
+        t, path = float(d.get("timestep")), os.path.join(out, d.get("file"))
+        if t not in by_time or path.endswith(".vti"):
+            by_time[t] = path
+    frames = sorted(by_time.items())
+    if not frames:
+        raise BadInput(f"{found[0]}: the series lists no frame")
+    return os.path.splitext(os.path.basename(found[0]))[0], frames
+
+
+def read_grid(path):
+    """A grid model's frame as points: its cells' centres, `kind` 0 for the water's cells
+    (level_set below 0), 1 for the solid ones and AIR for the rest, with the cells' fields."""
+    reader = vtkXMLImageDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    extent, origin, spacing = image.GetExtent(), image.GetOrigin(), image.GetSpacing()
+    # A 2D grid is one point thick in y: its cells lie at its y.
+    axes = [origin[a] + spacing[a] * (np.arange(extent[2 * a], extent[2 * a + 1]) + 0.5)
+            if extent[2 * a + 1] > extent[2 * a] else np.array([origin[a]]) for a in range(3)]
+    z, y, x = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")
+    centres = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
+    cells = image.GetCellData()
+    fields = {cells.GetArrayName(k): vtk_to_numpy(cells.GetArray(k))
+              for k in range(cells.GetNumberOfArrays())}
+    solid = fields.pop("solid") > 0
+    water = (fields.pop("level_set") < 0) & ~solid
+    fields["kind"] = np.where(water, 0, np.where(solid, 1, AIR)).astype(np.int32)
+    return centres, fields
+
+
+def read_frame(path):
+    """A frame's points (n x 3) and its point fields by name (n or n x 3)."""
+    if path.endswith(".vti"):
+        return read_grid(path)
+    reader = vtkXMLPPolyDataReader() if path.endswith(".pvtp") else vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    fields = data.GetPointData()
+    points = data.GetPoints()
+    if points is None:
+        return np.zeros((0, 3)), {}
+    return (vtk_to_numpy(points.GetData()).astype(np.float64),
+            {fields.GetArrayName(k): vtk_to_numpy(fields.GetArray(k))
+             for k in range(fields.GetNumberOfArrays())})
+
+
+def projection(points, view):
+    """The points' image coordinates (u right, v up) and their depth (larger: farther)."""
+    x, y, z = points[:, 0], points[:, 1], points[:, 2]
+    if view == "side":
+        return x, z, y
+    if view == "top":
+        return x, y, -z
+    return (x - y) * COS30, z + (x + y) * SIN30, x + y - z  # iso, from the low x and y corner
+
+
+def scalar(values):
+    return np.linalg.norm(values, axis=1) if values.ndim == 2 else values.astype(np.float64)
+
+
+def lattice_spacing(points, fields):
+    """The particles' spacing: the middle gap between neighbouring distinct x coordinates of the
+    first frame's water, which starts on a lattice (all points where it has none)."""
+    kind = fields.get("kind")
+    water = points[kind == 0] if kind is not None and np.any(kind == 0) else points
+    xs = np.unique(np.round(water[:, 0], 6))
+    gaps = np.diff(xs)
+    gaps = gaps[gaps > 1e-6]
+    return float(np.median(gaps)) if gaps.size else 0.01
+
+
+class Canvas:
+    """The image's framing: every frame drawn over the first frame's extent."""
+
+    def __init__(self, points, view, width, spacing):
+        u, v, _ = projection(points, view)
+        pad = 2 * spacing
+        self.u0, self.v0 = u.min() - pad, v.min() - pad
+        extent_u, extent_v = u.max() + pad - self.u0, v.max() + pad - self.v0
+        self.width = width
+        self.scale = width / extent_u  # pixels a metre
+        self.height = max(1, int(np.ceil(extent_v * self.scale)))
+        self.radius = max(1, int(np.ceil(0.6 * spacing * self.scale)))
+        self.extent = (self.u0, self.u0 + extent_u, self.v0, self.v0 + self.height / self.scale)
+
+    def draw(self, points, colours, behind, view):
+        """An image (height x width x 3) of the points as discs: those `behind` (the walls) first,
+        as a backdrop, then the others, the nearest drawn last."""
+        image = np.empty((self.height, self.width, 3))
+        image[:] = BACKGROUND
+        u, v, depth = projection(points, view)
+        # Farthest first, so that the nearest overwrite them; the walls before everything, or
+        # a 3D tank's near walls would hide the water.
+        order = np.lexsort((-depth, ~behind))
+        col = ((u[order] - self.u0) * self.scale).astype(np.int64)
+        row = self.height - 1 - ((v[order] - self.v0) * self.scale).astype(np.int64)
+        rgb = colours[order]
+        r = self.radius
+        for dr in range(-r, r + 1):
+            for dc in range(-r, r + 1):
+                if dr * dr + dc * dc > r * r:
+                    continue
+                rr, cc = row + dr, col + dc
+                inside = (rr >= 0) & (rr < self.height) & (cc >= 0) & (cc < self.width)
+                image[rr[inside], cc[inside]] = rgb[inside]
+        return image
+
+
+def colours_of(fields, n, field, norm, cmap):
+    """Each point's colour: water by the field (a grid model's surface, which has none, in one
+    blue), walls and bodies in greys."""
+    kind = fields.get("kind", np.zeros(n, dtype=np.int32))
+    colours = np.empty((n, 3))
+    water = kind == 0
+    colours[water] = cmap(norm(scalar(fields[field])[water]))[:, :3] if field else WATER
+    colours[kind == 1] = WALL
+    colours[(kind == 2) | (kind == 3)] = BODY
+    return colours
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("out", help="a run's output directory")
+    parser.add_argument("--field", default="velocity", help="the field that colours the water")
+    parser.add_argument("--view", default="side", choices=("side", "top", "iso"))
+    parser.add_argument("--movie", action="store_true", help="an MP4 of the frames (ffmpeg)")
+    parser.add_argument("--width", type=int, default=1280, help="the pictures' width [px]")
+    parser.add_argument("--fps", type=int, default=10, help="the movie's frames a second")
+    args = parser.parse_args()
+    if args.width < 16:
+        raise BadInput(f"--width: {args.width} pixels is too narrow (16 at least)")
+    name, frames = series(args.out)
+    first_points, first_fields = read_frame(frames[0][1])
+    # A frame with no fields (bodies alone) is drawn in one colour.
+    field = args.field if set(first_fields) - {"kind", "body"} else None
+    if field and field not in first_fields:
+        raise BadInput(f"--field: {frames[0][1]} has no field '{args.field}'; it has "
+                       + ", ".join(sorted(first_fields)))
+    if args.movie and subprocess.run(["which", "ffmpeg"], capture_output=True).returncode:
+        raise BadInput("--movie: ffmpeg not found (Debian's ffmpeg; scripts/setup.sh installs it)")
+    # The colour scale over every frame's water.
+    samples = [np.zeros(0)]
+    for _, path in frames if field else []:
+        _, fields = read_frame(path)
+        water = fields.get("kind", np.zeros(len(fields[field]), np.int32)) == 0
+        samples.append(scalar(fields[field])[water])
+    values = np.concatenate(samples)
+    low, high = (np.percentile(values, [1, 99]) if values.size else (0.0, 1.0))
+    norm = matplotlib.colors.Normalize(vmin=low, vmax=max(high, low + 1e-12))
+    cmap = matplotlib.colormaps["viridis"]
+    canvas = Canvas(first_points, args.view, args.width,
+                    lattice_spacing(first_points, first_fields))
+    target = os.path.join(args.out, "render")
+    os.makedirs(target, exist_ok=True)
+    stem = f"{field or 'points'}_{args.view}"
+    for old in glob.glob(os.path.join(target, f"{stem}_*.png")):
+        os.remove(old)
+    dpi = 100
+    seconds = []
+    for k, (t, path) in enumerate(frames):
+        start = time.perf_counter()
+        points, fields = read_frame(path)
+        kind = fields.get("kind", np.zeros(len(points), np.int32))
+        shown = kind != AIR
+        colours = colours_of(fields, len(points), field, norm, cmap)
+        image = canvas.draw(points[shown], colours[shown], kind[shown] == 1, args.view)
+        fig = plt.figure(figsize=((canvas.width + 160) / dpi, (canvas.height + 70) / dpi), dpi=dpi)
+        ax = fig.add_axes([0, 0, canvas.width / (canvas.width + 160),
+                           canvas.height / (canvas.height + 70)])
+        ax.imshow(image, extent=canvas.extent, interpolation="nearest")
+        ax.set_axis_off()
+        fig.text(0.01, 0.985, f"{name}   t = {t:.3f} s   ({args.view})", va="top")
+        if field:
+            bar = fig.add_axes([canvas.width / (canvas.width + 160) + 0.02, 0.1, 0.025, 0.75])
+            fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), cax=bar,
+                         label=field)
+        fig.savefig(os.path.join(target, f"{stem}_{k:06d}.png"), dpi=dpi)
+        plt.close(fig)
+        seconds.append(time.perf_counter() - start)
+    print(f"render: {len(frames)} frames of {name} into {target}/{stem}_*.png "
+          f"({np.median(seconds):.2f} s a frame, median; {len(first_points)} points in the first)")
+    if args.movie:
+        movie = os.path.join(target, f"{stem}.mp4")
+        subprocess.run(["ffmpeg", "-y", "-loglevel", "error", "-framerate", str(args.fps), "-i",
+                        os.path.join(target, f"{stem}_%06d.png"), "-vf",
+                        "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", movie],
+                       check=True)
+        print(f"render: {movie}")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except BadInput as problem:
+        print(f"error: {problem}", file=sys.stderr)
+        sys.exit(2)

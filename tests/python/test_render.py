@@ -1,0 +1,79 @@
+"""`sluice render` on a finished run: pictures of the right size, the water where it is, a
+movie, and bad input named."""
+import os
+import subprocess
+
+import matplotlib
+import matplotlib.image
+import numpy as np
+import pytest
+import sluice
+from conftest import ROOT, case_path
+
+SLUICE = os.environ.get("SLUICE_EXECUTABLE", os.path.join(ROOT, "build", "release", "sluice"))
+
+
+@pytest.fixture(scope="module")
+def finished_run(tmp_path_factory):
+    """The 2D dam break at 0.1 m to 0.1 s: its water a column 1 m wide at the left of a 4 m
+    tank."""
+    out = str(tmp_path_factory.mktemp("run"))
+    case = sluice.Case.from_yaml(case_path("dam_break_2d"),
+                                 set={"spacing": 0.1, "end_time": 0.1, "output_interval": 0.05})
+    sluice.Simulation(case, out=out, threads=1).run()
+    return out
+
+
+def render(*args):
+    return subprocess.run([SLUICE, "render", *args], capture_output=True, text=True)
+
+
+def water_pixels(image):
+    """Which pixels hold one of viridis' colours (the water's)."""
+    viridis = matplotlib.colormaps["viridis"](np.linspace(0, 1, 256))[:, :3]
+    rgb = image[..., :3].reshape(-1, 1, 3)
+    distance = np.min(np.linalg.norm(rgb - viridis[None, :, :], axis=2), axis=1)
+    return (distance < 0.02).reshape(image.shape[:2])
+
+
+def test_draws_the_water_where_it_is(finished_run):
+    done = render(finished_run, "--field", "pressure", "--width", "400")
+    assert done.returncode == 0, done.stderr
+    pictures = sorted(os.listdir(os.path.join(finished_run, "render")))
+    assert pictures == [f"pressure_side_{k:06d}.png" for k in range(3)]
+    image = matplotlib.image.imread(os.path.join(finished_run, "render", pictures[0]))
+    # 400 pixels of picture and 160 of colour bar across; the tank's 4.6 m by 3.3 m with its
+    # walls, below 70 pixels of title.
+    assert image.shape[1] == 560 and 330 < image.shape[0] < 390
+    water = water_pixels(image[:, :400])
+    assert water.sum() > 1000  # not empty
+    rows, columns = np.nonzero(water)
+    # At t = 0 the water is the column 0 < x < 1 m of the 4 m tank (4.9 m across with its walls
+    # and margins): a fifth of the picture's width, in its left quarter.
+    assert columns.max() < 0.3 * 400 and columns.max() - columns.min() > 0.15 * 400
+
+
+def test_a_movie_of_the_pictures(finished_run):
+    done = render(finished_run, "--view", "side", "--movie", "--width", "200")
+    assert done.returncode == 0, done.stderr
+    movie = os.path.join(finished_run, "render", "velocity_side.mp4")
+    assert os.path.getsize(movie) > 1000
+
+
+def test_an_unknown_field_is_bad_input(finished_run):
+    done = render(finished_run, "--field", "vorticity")
+    assert done.returncode == 2
+    assert "has no field 'vorticity'; it has density, kind, pressure, velocity" in done.stderr
+
+
+def test_a_folder_without_a_run_is_bad_input(tmp_path):
+    done = render(str(tmp_path))
+    assert done.returncode == 2
+    assert f"{tmp_path}: no run's series (CASE.pvd) here" in done.stderr
+
+
+def test_a_bad_view_or_width_is_bad_input(finished_run):
+    done = render(finished_run, "--view", "front")
+    assert done.returncode == 2 and "--view: front not in {side,top,iso}" in done.stderr
+    done = render(finished_run, "--width", "8")
+    assert done.returncode == 2 and "--width" in done.stderr
