@@ -3,7 +3,8 @@
 
 Runs cases/bench_dam_break_3d.yaml to END simulated seconds on THREADS threads REPEAT times
 each way, alternating: with `sluice run --stats` and with sluice.Simulation(...).run(), a
-callback every output interval (0.005 s) reading the probes, as a script would. Both report the
+callback every 0.005 s (half the case's output interval: the step that lands on each call
+is shortened, as an output's is; both took 100 steps) reading the probes, as a script would. Both report the
 wall seconds of their steps alone (building the particles is not counted): the command line in
 its statistics, Python in Simulation.summary(). Prints each run and the medians.
 

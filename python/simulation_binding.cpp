@@ -58,7 +58,7 @@ class Simulation {
  public:
   Simulation(const io::CaseConfig& config, std::optional<std::string> out, int threads,
              std::optional<double> end, bool resume, bool progress)
-      : threads_(threads > 0 ? threads : omp_get_num_procs()) {
+      : threads_(threads > 0 ? threads : omp_get_max_threads()) {
     RunOptions options;
     options.out_dir = out.value_or("out/" + config.name);
     options.end_time = end;
@@ -72,18 +72,24 @@ class Simulation {
   double time() const { return run_->time(); }
   long steps() const { return run_->step_count(); }
   int threads() const { return threads_; }
-  const CaseRun& run() const { return *run_; }
+  // The run, for reading between steps (not while another thread steps it).
+  const CaseRun& run() const {
+    idle();
+    return *run_;
+  }
 
   // One step, not past `until` (the end, by default).
   void step(py::object self, std::optional<double> until) {
+    usable();
+    if (run_->finished()) throw py::value_error("the run is at its end time");
     const double limit = until.value_or(run_->end_time());
     check_until(limit);
-    if (run_->finished()) throw py::value_error("the run is at its end time");
     one_step(self, limit);
   }
 
   // Body `name`'s velocity from `controller(sim)` before every step (None: no longer).
   void drive(const std::string& name, const py::object& controller) {
+    not_within_a_step();
     const std::size_t b = body_index(name);
     std::erase_if(controllers_, [&](const auto& c) { return c.first == b; });
     if (controller.is_none()) return;
@@ -100,8 +106,9 @@ class Simulation {
   // of it, which the steps land on) and checking between steps for Ctrl-C.
   void run_to(py::object self, std::optional<double> until, std::optional<double> every,
               const py::object& callback) {
+    usable();
     const double limit = until.value_or(run_->end_time());
-    check_until(limit);
+    if (limit > time()) check_until(limit);
     if (every && !(*every > 0)) throw py::value_error("every must be above 0 s");
     if (every && callback.is_none()) throw py::value_error("every needs a callback");
     const double tolerance = 1e-12 * std::max(1.0, limit);
@@ -118,16 +125,53 @@ class Simulation {
   }
 
   void save() {
+    usable();
     const ThreadCount count(threads_);
     run_->write_checkpoint();
   }
 
  private:
-  // The controllers' velocities, then a step without the GIL.
+  // Sets a flag while it lives.
+  class Raised {
+   public:
+    explicit Raised(bool& flag) : flag_(flag) { flag_ = true; }
+    ~Raised() { flag_ = false; }
+    Raised(const Raised&) = delete;
+    Raised& operator=(const Raised&) = delete;
+
+   private:
+    bool& flag_;
+  };
+  // Not stepping: another Python thread, while the step runs without the GIL, may neither read
+  // the simulation nor step it.
+  void idle() const {
+    if (stepping_) throw std::runtime_error("the simulation is stepping: wait for its step to end");
+  }
+  // Neither stepping nor in a controller, which may read the simulation but not step, save or
+  // drive it.
+  void not_within_a_step() const {
+    idle();
+    if (controlling_) {
+      throw std::runtime_error("a controller may read the simulation, not step, save or drive it");
+    }
+  }
+  // Not within a step, and not diverged: a run that went wrong is of no further use.
+  void usable() const {
+    not_within_a_step();
+    if (diverged_) {
+      throw std::runtime_error(
+          "the run diverged: its last good state is the last frame written; start a new "
+          "Simulation");
+    }
+  }
+  // The controllers' velocities (over a copy of the list: a controller may drive a body),
+  // then a step without the GIL.
   void one_step(const py::object& self, double until) {
     if (!controllers_.empty()) {
+      const Raised controlling(controlling_);
       const auto start = std::chrono::steady_clock::now();
-      for (const auto& [b, controller] : controllers_) {
+      const auto controllers = controllers_;
+      for (const auto& [b, controller] : controllers) {
         const auto [velocity, angular_velocity] = commanded(controller(self));
         run_->command_velocity(b, velocity, angular_velocity);
       }
@@ -135,8 +179,14 @@ class Simulation {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     const ThreadCount count(threads_);
+    const Raised stepping(stepping_);
     const py::gil_scoped_release free_python;
-    run_->step(until);
+    try {
+      run_->step(until);
+    } catch (const DivergenceError&) {
+      diverged_ = true;
+      throw;
+    }
   }
   // A controller's answer: a velocity, or (velocity, angular velocity); 3 components each, or
   // for a 2D case's velocity 2 (x, z).
@@ -147,7 +197,7 @@ class Simulation {
       if (values.size() == 2 && plane) return Vec3(values[0], 0, values[1]);
       throw py::value_error(
           "a controller gives a velocity of 3 components (2 in 2D: x, z), or "
-          "a pair (velocity, angular velocity)");
+          "a pair (velocity, angular velocity of 3 components)");
     };
     const bool pair = PySequence_Check(answer.ptr()) == 1 && py::len(answer) == 2 &&
                       PySequence_Check(answer[py::int_(0)].ptr()) == 1;
@@ -162,10 +212,12 @@ class Simulation {
     }
     throw py::key_error("no body named '" + name + "'");
   }
-  static double next_multiple(double time, double interval) {
-    return (std::floor(time / interval + 1e-9) + 1) * interval;
-  }
   void check_until(double until) const {
+    if (!(until > time() + 1e-12 * std::max(1.0, until))) {
+      throw py::value_error("until (" + std::to_string(until) +
+                            " s) must lie after the simulation's time (" + std::to_string(time()) +
+                            " s)");
+    }
     if (until > run_->end_time() * (1 + 1e-12)) {
       throw py::value_error("until is past the run's end time (" +
                             std::to_string(run_->end_time()) +
@@ -177,6 +229,7 @@ class Simulation {
   std::unique_ptr<CaseRun> run_;
   std::vector<std::pair<std::size_t, py::object>> controllers_;  // body, controller(sim)
   double controller_seconds_ = 0;                                // spent in the controllers
+  bool stepping_ = false, controlling_ = false, diverged_ = false;
 };
 
 py::dict bodies_of(const CaseRun& run) {

@@ -2,12 +2,12 @@
 """Reading a finished run: its probes (probes.csv) with numpy and its frames (the ParaView
 series' .vtp files) with VTK, outside sluice.
 
-Runs cases/dam_break_2d.yaml into OUT with sluice.Simulation where OUT holds no run yet (0.05 m
-particles to 0.6 s: a few seconds), then reads what it wrote: the surge front from probes.csv,
-and from the series' frames the water's particles at three times, coloured by pressure. Writes
-OUT/read_a_run.png (or FIGURE) and prints the front's last reading.
+Runs cases/dam_break_2d.yaml into OUT with sluice.Simulation where OUT holds no run yet, or with
+--rerun (0.05 m particles to 0.6 s: a few seconds), then reads what it wrote: the surge front
+from probes.csv, and from the series' frames the water's particles at three times, coloured by
+pressure. Writes OUT/read_a_run.png (or FIGURE) and prints the front's last reading.
 
-usage: /usr/bin/python3 examples/python/read_a_run.py [--out DIR] [--figure PNG]
+usage: /usr/bin/python3 examples/python/read_a_run.py [--out DIR] [--figure PNG] [--rerun]
 """
 import argparse
 import os
@@ -48,10 +48,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--out", default=os.path.join(ROOT, "out", "examples", "read_a_run"))
     parser.add_argument("--figure", help="the plot's path (default OUT/read_a_run.png)")
+    parser.add_argument("--rerun", action="store_true", help="run the case even where OUT has it")
     args = parser.parse_args()
     case = sluice.Case.from_yaml(os.path.join(ROOT, "cases", "dam_break_2d.yaml"),
                                  set={"spacing": 0.05, "end_time": 0.6, "output_interval": 0.1})
-    if not os.path.exists(os.path.join(args.out, f"{case.name}.pvd")):
+    if args.rerun or not os.path.exists(os.path.join(args.out, f"{case.name}.pvd")):
         sluice.Simulation(case, out=args.out).run()
 
     probes = np.genfromtxt(os.path.join(args.out, "probes.csv"), delimiter=",", names=True)

@@ -92,6 +92,14 @@ for target in "${targets[@]}"; do
   delay=$((RANDOM % 41))
   sleep "$(printf '0.%03d' "$delay")"
   if kill_run; then
+    # A launcher whose ranks died before they had all registered with it may never notice
+    # (OpenMPI's PMIx: "UNREACHABLE", seen here once in a few dozen runs): one still there after
+    # 10 s is killed too, as the rest of the lost machine.
+    for ((wait_ms = 0; wait_ms < 10000; wait_ms += 10)); do
+      kill -0 "$pid" 2>/dev/null || break
+      sleep 0.01
+    done
+    kill -KILL "$pid" 2>/dev/null || true
     wait "$pid" 2>/dev/null || true
     landed=$((landed + 1))
     echo "kill $landed: at step >= $target of $total, $delay ms after (segment $segment)"

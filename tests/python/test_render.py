@@ -39,7 +39,8 @@ def water_pixels(image):
 def test_draws_the_water_where_it_is(finished_run):
     done = render(finished_run, "--field", "pressure", "--width", "400")
     assert done.returncode == 0, done.stderr
-    pictures = sorted(os.listdir(os.path.join(finished_run, "render")))
+    pictures = sorted(name for name in os.listdir(os.path.join(finished_run, "render"))
+                      if name.startswith("pressure_side_"))
     assert pictures == [f"pressure_side_{k:06d}.png" for k in range(3)]
     image = matplotlib.image.imread(os.path.join(finished_run, "render", pictures[0]))
     # 400 pixels of picture and 160 of colour bar across; the tank's 4.6 m by 3.3 m with its
@@ -77,3 +78,9 @@ def test_a_bad_view_or_width_is_bad_input(finished_run):
     assert done.returncode == 2 and "--view: front not in {side,top,iso}" in done.stderr
     done = render(finished_run, "--width", "8")
     assert done.returncode == 2 and "--width" in done.stderr
+
+
+def test_a_broken_series_is_bad_input(tmp_path):
+    (tmp_path / "run.pvd").write_text("<VTKFile><Collection><DataSet timestep=")
+    done = render(str(tmp_path))
+    assert done.returncode == 2 and "run.pvd: not a readable series" in done.stderr

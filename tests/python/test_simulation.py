@@ -127,6 +127,9 @@ def test_a_run_that_goes_wrong_raises(tmp_path):
     sim = sluice.Simulation(case, out=str(tmp_path), threads=1)
     with pytest.raises(sluice.DivergenceError, match="left the domain"):
         sim.run()
+    for go_on in (sim.step, sim.run, sim.save):
+        with pytest.raises(RuntimeError, match="the run diverged"):
+            go_on()
 
 
 def test_a_grid_model_shows_its_cells(tmp_path):
@@ -194,6 +197,10 @@ def test_only_a_prescribed_body_is_driven(tmp_path):
 
 def test_a_controller_that_raises_stops_before_the_step(tmp_path):
     sim = sluice.Simulation(tank_with_a_paddle(), out=str(tmp_path), threads=1)
+    sim.drive("paddle", lambda s: 1 / 0)
+    with pytest.raises(ZeroDivisionError):
+        sim.run()
+    assert sim.steps == 0
     sim.drive("paddle", lambda s: [1, 2, 3, 4])
     with pytest.raises(ValueError, match="3 components"):
         sim.step()
@@ -201,3 +208,39 @@ def test_a_controller_that_raises_stops_before_the_step(tmp_path):
     sim.drive("paddle", lambda s: [0.1, 0])
     sim.step()
     assert sim.steps == 1
+
+
+def test_a_controller_reads_but_does_not_step(tmp_path):
+    sim = sluice.Simulation(tank_with_a_paddle(), out=str(tmp_path), threads=1)
+    heights = []
+
+    def reads(s):
+        heights.append(s.bodies()["paddle"]["position"][2])
+        return [0, 0.1]
+
+    sim.drive("paddle", reads)
+    sim.run(until=0.02)
+    assert len(heights) == sim.steps and heights[-1] > heights[0]
+    sim.drive("paddle", lambda s: s.step())
+    with pytest.raises(RuntimeError, match="not step"):
+        sim.step()
+
+
+def test_a_2d_body_moves_in_its_plane_alone(tmp_path):
+    sim = sluice.Simulation(tank_with_a_paddle(), out=str(tmp_path), threads=1)
+    start = sim.bodies()["paddle"]["position"].copy()
+    sim.drive("paddle", lambda s: ([0.1, 0.3, 0], [0.2, 0.5, 0.2]))
+    sim.run(until=0.02)
+    paddle = sim.bodies()["paddle"]
+    np.testing.assert_allclose(paddle["angular_velocity"], [0, 0.5, 0], atol=1e-9)
+    assert paddle["position"][1] == start[1]  # y is locked in 2D
+
+
+def test_a_step_goes_forward_only(small_dam_break, tmp_path):
+    sim = sluice.Simulation(small_dam_break, out=str(tmp_path), threads=1)
+    sim.run(until=0.02)
+    for until in (0.01, 0.02):
+        with pytest.raises(ValueError, match="after the simulation's time"):
+            sim.step(until=until)
+    sim.run(until=0.02)  # already there: nothing to do
+    assert sim.time == pytest.approx(0.02, abs=1e-12)

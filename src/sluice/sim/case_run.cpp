@@ -25,12 +25,6 @@ namespace sluice {
 
 namespace {
 
-// Next multiple of `interval` strictly after `time` (with a tolerance for rounding).
-double next_multiple(double time, double interval) {
-  const double k = std::floor(time / interval + 1e-9) + 1;
-  return k * interval;
-}
-
 bool reached(double time, double due) {
   return time >= due * (1 - 1e-12);
 }
@@ -61,6 +55,11 @@ std::unique_ptr<SteppedSimulation> make_simulation(const io::CaseConfig& config,
 }
 
 }  // namespace
+
+double next_multiple(double time, double interval) {
+  const double k = std::floor(time / interval + 1e-9) + 1;
+  return k * interval;
+}
 
 // The run's outputs and its bookkeeping beside the simulation.
 struct CaseRun::Outputs {

@@ -20,6 +20,10 @@ class FluidObservation;   // fluid/fluid_observation.hpp
 class RigidBodies;        // sim/rigid_bodies.hpp
 class SteppedSimulation;  // sim/simulation.hpp
 
+// The next multiple of `interval` strictly after `time` (with a tolerance for rounding): when
+// an output falls due.
+double next_multiple(double time, double interval);
+
 class CaseRun {
  public:
   // Builds the simulation (throws InputError; bad input leaves no directory behind), opens the

@@ -231,7 +231,14 @@ void RigidBodies::command_velocity(std::size_t b, double time, const Vec3& veloc
   }
   SystemBody& body = system_.bodies()[b];
   const RigidBody start = body.state;
-  body.prescribed = [start, time, velocity, angular_velocity](double t, RigidBody& state) {
+  // Only along the motions the body is free in (a 2D body: in its plane, turning about y).
+  Vec3 free_velocity = velocity, free_angular_velocity = angular_velocity;
+  for (int k = 0; k < 3; ++k) {
+    if (start.locked_translation[k]) free_velocity[k] = 0;
+    if (start.locked_rotation[k]) free_angular_velocity[k] = 0;
+  }
+  body.prescribed = [start, time, velocity = free_velocity,
+                     angular_velocity = free_angular_velocity](double t, RigidBody& state) {
     const double elapsed = t - time;
     const double angle = angular_velocity.norm() * elapsed;
     const Eigen::Quaterniond turn =

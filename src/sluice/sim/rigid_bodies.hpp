@@ -33,7 +33,8 @@ class RigidBodies final : public BodyGeometry {
 
   long substeps() const { return system_.substeps_taken(); }
   // From `time` on, prescribed body b moves on from where it stands at velocity `velocity` (of
-  // its centre of mass) turning at `angular_velocity` [rad/s], in place of its case's motion: a
+  // its centre of mass) turning at `angular_velocity` [rad/s] (each along the motions the body
+  // is not locked in; a 2D body's in its plane), in place of its case's motion: a
   // script's controller sets it before each step (python/). Throws std::invalid_argument for a
   // body whose motion is not prescribed. Not kept in checkpoints: a resumed run follows the
   // case's motion until it is commanded again.
