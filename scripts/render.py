@@ -31,8 +31,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLPPolyDataReader,
-                                 vtkXMLPolyDataReader)
+from vtkmodules.vtkIOXML import vtkXMLPPolyDataReader, vtkXMLPolyDataReader
+
+# validation/frames.py reads a grid model's cells.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation"))
+import frames as validation_frames  # noqa: E402
 
 WALL, BODY, BACKGROUND = (0.82, 0.82, 0.82), (0.35, 0.35, 0.38), (1.0, 1.0, 1.0)
 WATER = (0.16, 0.44, 0.78)  # where the frames hold no field
@@ -72,19 +75,8 @@ def series(out):
 def read_grid(path):
     """A grid model's frame as points: its cells' centres, `kind` 0 for the water's cells
     (level_set below 0), 1 for the solid ones and AIR for the rest, with the cells' fields."""
-    reader = vtkXMLImageDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    extent, origin, spacing = image.GetExtent(), image.GetOrigin(), image.GetSpacing()
-    # A 2D grid is one point thick in y: its cells lie at its y.
-    axes = [origin[a] + spacing[a] * (np.arange(extent[2 * a], extent[2 * a + 1]) + 0.5)
-            if extent[2 * a + 1] > extent[2 * a] else np.array([origin[a]]) for a in range(3)]
-    z, y, x = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")
-    centres = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
-    cells = image.GetCellData()
-    fields = {cells.GetArrayName(k): vtk_to_numpy(cells.GetArray(k))
-              for k in range(cells.GetNumberOfArrays())}
+    centres, fields = validation_frames.read_grid(path, "pressure", "velocity", "level_set",
+                                                  "solid")
     solid = fields.pop("solid") > 0
     water = (fields.pop("level_set") < 0) & ~solid
     fields["kind"] = np.where(water, 0, np.where(solid, 1, AIR)).astype(np.int32)
