@@ -244,3 +244,10 @@ def test_a_step_goes_forward_only(small_dam_break, tmp_path):
             sim.step(until=until)
     sim.run(until=0.02)  # already there: nothing to do
     assert sim.time == pytest.approx(0.02, abs=1e-12)
+
+
+def test_no_thread_count_is_openmps_default(small_dam_break, tmp_path):
+    """threads=0 takes OpenMP's default, as the command line does: OMP_NUM_THREADS where set."""
+    expected = int(os.environ.get("OMP_NUM_THREADS", os.cpu_count()))
+    assert sluice.Simulation(small_dam_break, out=str(tmp_path)).threads == expected
+    assert sluice.Simulation(small_dam_break, out=str(tmp_path), threads=3).threads == 3
