@@ -48,13 +48,13 @@ std::string ranks_named(std::size_t ranks) {
   return ranks == 1 ? "one rank" : fmt::format("{} ranks", ranks);
 }
 
+}  // namespace
+
 std::unique_ptr<SteppedSimulation> make_simulation(const io::CaseConfig& config,
                                                    const ModelServices& services) {
   if (config.dimension == 2) return std::make_unique<Simulation<2>>(config, services);
   return std::make_unique<Simulation<3>>(config, services);
 }
-
-}  // namespace
 
 double next_multiple(double time, double interval) {
   const double k = std::floor(time / interval + 1e-9) + 1;
@@ -89,6 +89,13 @@ struct CaseRun::Outputs {
         first_rank(communicator.rank() == 0),
         checkpoint_folder(out_dir, communicator),
         identity(header) {}
+
+  // A row of the bodies' files at t (the fluid's energy is a sum over the ranks: every rank
+  // works it out, the first writes it).
+  void record_bodies(SteppedSimulation& sim, double t) {
+    const FluidEnergy energy = sim.fluid().observation().energy();
+    if (body_output) body_output->record(t, sim.bodies(), sim.coupler(), energy);
+  }
 
   double elapsed() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_wall).count();
@@ -251,9 +258,7 @@ CaseRun::CaseRun(const io::CaseConfig& config, const RunOptions& options)
     timers.time(o.output_slot, [&] {
       o.frames->write(fluid.view(), sim.time());
       o.probes->record(sim.time(), fluid);
-      // The fluid's energy is a sum over the ranks: every rank works it out.
-      const FluidEnergy energy = fluid.energy();
-      if (o.body_output) o.body_output->record(sim.time(), sim.bodies(), sim.coupler(), energy);
+      o.record_bodies(sim, sim.time());
     });
     o.schedule.next_output = next_multiple(0, config.output_interval);
     o.schedule.next_probe = o.probes->empty() ? std::numeric_limits<double>::infinity()
@@ -335,8 +340,7 @@ void CaseRun::step(double until) {
       o.schedule.next_probe = next_multiple(t, config.probe_interval);
     }
     if (reached(t, o.schedule.next_body) || at_end) {
-      const FluidEnergy energy = fluid.energy();
-      if (o.body_output) o.body_output->record(t, sim.bodies(), sim.coupler(), energy);
+      o.record_bodies(sim, t);
       o.schedule.next_body = next_multiple(t, config.body_interval);
     }
     if (reached(t, o.schedule.next_output) || at_end) {

@@ -20,6 +20,12 @@ class FluidObservation;   // fluid/fluid_observation.hpp
 class RigidBodies;        // sim/rigid_bodies.hpp
 class SteppedSimulation;  // sim/simulation.hpp
 
+struct ModelServices;  // fluid/model_entry.hpp
+
+// The case's simulation in its dimension (throws InputError).
+std::unique_ptr<SteppedSimulation> make_simulation(const io::CaseConfig& config,
+                                                   const ModelServices& services);
+
 // The next multiple of `interval` strictly after `time` (with a tolerance for rounding): when
 // an output falls due.
 double next_multiple(double time, double interval);

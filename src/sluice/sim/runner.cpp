@@ -9,33 +9,6 @@
 
 namespace sluice {
 
-namespace {
-
-template <int D>
-CheckSummary check(const io::CaseConfig& config, HypreSession* hypre) {
-  const SizeEstimate estimate = estimate_size(config);
-  refuse_if_it_cannot_fit_here(config, estimate);
-  ModelServices services;
-  services.hypre = hypre;
-  Simulation<D> sim(config, services);
-  const FluidSize size = sim.fluid().observation().size();
-  CheckSummary out;
-  out.element_name = size.element_name;
-  out.particles = size.elements;
-  out.fluid_particles = size.fluid;
-  out.body_particles = size.body;
-  out.wall_particles = size.wall;
-  const TimeStep first = sim.next_time_step();
-  out.first_time_step = first.dt;
-  out.first_time_step_limit = first.limit;
-  out.model = sim.fluid().describe();
-  out.bodies = sim.bodies().count();
-  out.estimated_bytes = estimate.bytes;
-  return out;
-}
-
-}  // namespace
-
 RunSummary run_case(const io::CaseConfig& config, const RunOptions& options) {
   CaseRun run(config, options);
   while (!run.finished()) run.step(run.end_time());
@@ -47,7 +20,25 @@ RunSummary run_case(const io::CaseConfig& config, const RunOptions& options) {
 }
 
 CheckSummary check_case(const io::CaseConfig& config, HypreSession* hypre) {
-  return config.dimension == 2 ? check<2>(config, hypre) : check<3>(config, hypre);
+  const SizeEstimate estimate = estimate_size(config);
+  refuse_if_it_cannot_fit_here(config, estimate);
+  ModelServices services;
+  services.hypre = hypre;
+  const std::unique_ptr<SteppedSimulation> sim = make_simulation(config, services);
+  const FluidSize size = sim->fluid().observation().size();
+  CheckSummary out;
+  out.element_name = size.element_name;
+  out.particles = size.elements;
+  out.fluid_particles = size.fluid;
+  out.body_particles = size.body;
+  out.wall_particles = size.wall;
+  const TimeStep first = sim->next_time_step();
+  out.first_time_step = first.dt;
+  out.first_time_step_limit = first.limit;
+  out.model = sim->fluid().describe();
+  out.bodies = sim->bodies().count();
+  out.estimated_bytes = estimate.bytes;
+  return out;
 }
 
 std::string stats_json(const RunSummary& r) {
