@@ -13,17 +13,18 @@
 #include <thread>
 #include <vector>
 
-#include "child_runs.hpp"
-#include "compare_command.hpp"
 #include "option_checks.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/linear/hypre_session.hpp"
 #include "sluice/parallel/communicator.hpp"
+#include "sluice/sim/device_choice.hpp"
 #include "sluice/sim/runner.hpp"
 #include "sluice/sim/size_estimate.hpp"
-#include "sweep_command.hpp"
+#include "sluice/study/child_runs.hpp"
+#include "sluice/study/compare.hpp"
+#include "sluice/study/sweep.hpp"
 
 namespace {
 
@@ -145,10 +146,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(16, 16384));
 
   sluice::CompareOptions compare_options;
+  std::string model_list;
   CLI::App* compare = app.add_subcommand(
       "compare", "run a case with several fluid models; one table and plot of their answers");
   compare->add_option("CASE", compare_options.case_path, "case file (YAML)")->required();
-  compare->add_option("--models", compare_options.models,
+  compare->add_option("--models", model_list,
                       "fluid models, comma-separated (default: the case's compare: entries, or "
                       "every model)");
   compare->add_option("--set", compare_options.settings,
@@ -187,32 +189,21 @@ int main(int argc, char** argv) {
       return *code;
     }
     if (sweep->parsed()) {
-      sweep_options.self = sluice::this_program();
+      sweep_options.program = sluice::this_program();
       sweep_options.hypre = &hypre;
-      return sluice::run_sweep(sweep_options);
+      return sluice::run_sweep(sweep_options).all_done() ? sluice::kExitOk : sluice::kExitDiverged;
     }
     if (compare->parsed()) {
-      compare_options.self = sluice::this_program();
+      compare_options.program = sluice::this_program();
+      if (!model_list.empty()) compare_options.models = sluice::split_model_list(model_list);
       compare_options.hypre = &hypre;
-      return sluice::run_compare(compare_options);
+      return sluice::run_compare(compare_options).all_done() ? sluice::kExitOk
+                                                             : sluice::kExitDiverged;
     }
     sluice::exec::set_thread_count(threads);
     if (!device.empty() && device != "cpu") {
-      // model.device is a key of the models that run elsewhere than on the CPU: for another
-      // model, name the option, not an unknown key.
-      const sluice::io::CaseConfig plain = sluice::io::read_case(case_path, overrides);
-      const std::vector<std::string> models =
-          sluice::shipped_models(plain.dimension).names_on(device);
-      if (std::find(models.begin(), models.end(), plain.model_name) == models.end()) {
-        std::string names;  // "wcsph", "mps and wcsph", "a, b and c"
-        for (std::size_t k = 0; k < models.size(); ++k) {
-          names += (k == 0 ? "" : k + 1 == models.size() ? " and " : ", ") + models[k];
-        }
-        fmt::print(stderr, "error: --device: the {} device runs the {} model{} only, not '{}'\n",
-                   device, names, models.size() == 1 ? "" : "s", plain.model_name);
-        return sluice::kExitBadInput;
-      }
-      overrides.push_back("model.device=" + device);
+      sluice::check_device(sluice::io::read_case(case_path, overrides), device, "--device");
+      overrides.push_back(sluice::device_override(device));
     }
     const sluice::io::CaseConfig config = sluice::io::read_case(case_path, overrides);
     if (check->parsed()) {

@@ -2,9 +2,11 @@
 // file (with --set's overrides) or from a Python dict.
 #include "case_binding.hpp"
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -23,7 +25,12 @@ YAML::Node yaml_of(const py::handle& value) {
   // bool before int: Python's bool is an int.
   if (py::isinstance<py::bool_>(value)) return YAML::Node(value.cast<bool>());
   if (py::isinstance<py::int_>(value)) return YAML::Node(value.cast<long long>());
-  if (py::isinstance<py::float_>(value)) return YAML::Node(value.cast<double>());
+  // The shortest text that reads back as the same double (0.05, not 0.050000000000000003);
+  // YAML's own for infinities and NaN.
+  if (py::isinstance<py::float_>(value)) {
+    const double number = value.cast<double>();
+    return std::isfinite(number) ? YAML::Node(fmt::format("{}", number)) : YAML::Node(number);
+  }
   if (py::isinstance<py::str>(value)) return YAML::Node(value.cast<std::string>());
   if (py::isinstance<py::dict>(value)) {
     YAML::Node map(YAML::NodeType::Map);
@@ -53,12 +60,16 @@ std::string flow_text(const YAML::Node& node) {
 std::vector<std::string> overrides_of(const py::dict& settings) {
   std::vector<std::string> overrides;
   for (const auto& [key, value] : settings) {
-    overrides.push_back(py::str(key).cast<std::string>() + "=" + flow_text(yaml_of(value)));
+    overrides.push_back(py::str(key).cast<std::string>() + "=" + yaml_text(value));
   }
   return overrides;
 }
 
 }  // namespace
+
+std::string yaml_text(const py::handle& value) {
+  return flow_text(yaml_of(value));
+}
 
 void bind_case(py::module_& m) {
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);

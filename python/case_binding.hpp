@@ -1,9 +1,15 @@
-// sluice.Case and sluice.InputError (case_binding.cpp).
+// sluice.Case and sluice.InputError (case_binding.cpp), and Python values as YAML.
 #pragma once
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 namespace sluice::python {
+
+// A Python value (None, bool, number, str, list, tuple, dict, numpy) as one line of YAML, as
+// --set takes it: "[0.5, 1]", "{name: mps}". TypeError for anything else.
+std::string yaml_text(const pybind11::handle& value);
 
 void bind_case(pybind11::module_& m);
 

@@ -4,9 +4,13 @@
 
 #include "case_binding.hpp"
 #include "simulation_binding.hpp"
+#include "study_binding.hpp"
 
 PYBIND11_MODULE(_sluice, m) {
-  m.doc() = "sluice's engine: cases, simulations stepped from Python, their fields and loads.";
+  m.doc() =
+      "sluice's engine: cases, simulations stepped from Python, their fields and loads; sweeps "
+      "and comparisons of models.";
   sluice::python::bind_case(m);
   sluice::python::bind_simulation(m);
+  sluice::python::bind_studies(m);
 }

@@ -5,6 +5,7 @@
 #include <omp.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <yaml-cpp/yaml.h>
 
 #include <chrono>
 #include <cmath>
@@ -22,15 +23,13 @@
 #include "sluice/fluid/fluid_observation.hpp"
 #include "sluice/linear/hypre_session.hpp"
 #include "sluice/sim/case_run.hpp"
+#include "sluice/sim/device_choice.hpp"
 #include "sluice/sim/rigid_bodies.hpp"
 
 namespace py = pybind11;
 
 namespace sluice::python {
 
-namespace {
-
-// The process's MPI and hypre, started when a solve first asks, stopped when Python exits.
 HypreSession& hypre_session() {
   static HypreSession* session = [] {
     auto* s = new HypreSession;  // left to the exit handler, not to static destruction
@@ -38,6 +37,19 @@ HypreSession& hypre_session() {
     return s;
   }();
   return *session;
+}
+
+namespace {
+
+// The case with its model on `device`, as --device puts it there; "cpu" for a model that runs
+// only there leaves the case as it is.
+io::CaseConfig on_device(const io::CaseConfig& config, const std::string& device) {
+  check_device(config, device, "device");
+  if (device == "cpu" && !config.model["device"]) return config;
+  io::CaseConfig moved = config;
+  moved.model = YAML::Clone(config.model);  // a YAML node is shared by its copies
+  moved.model["device"] = device;
+  return moved;
 }
 
 // OpenMP's thread count is the calling thread's: each simulation sets its own while it steps.
@@ -57,7 +69,8 @@ class ThreadCount {
 class Simulation {
  public:
   Simulation(const io::CaseConfig& config, std::optional<std::string> out, int threads,
-             std::optional<double> end, bool resume, bool progress)
+             std::optional<double> end, bool resume, bool progress,
+             const std::optional<std::string>& device = std::nullopt)
       : threads_(threads > 0 ? threads : omp_get_max_threads()) {
     RunOptions options;
     options.out_dir = out.value_or("out/" + config.name);
@@ -66,7 +79,7 @@ class Simulation {
     options.quiet = !progress;
     options.hypre = &hypre_session();
     const ThreadCount count(threads_);
-    run_ = std::make_unique<CaseRun>(config, options);
+    run_ = std::make_unique<CaseRun>(device ? on_device(config, *device) : config, options);
   }
 
   double time() const { return run_->time(); }
@@ -286,13 +299,15 @@ bodies' files, checkpoints) into `out` (default out/CASE_NAME) on the case's sch
     sim.run(until=0.5, every=0.1, callback=lambda s: print(s.time, s.probes()))
 
 `threads` is this simulation's thread count (0: every core), set while it steps and put back
-after. `end` overrides the case's end_time; `resume=True` goes on from the newest checkpoint in
+after. `device` ('cpu', 'gpu', 'emulated'; default: the case's model.device) is where its loops
+run, as `sluice run --device`. `end` overrides the case's end_time; `resume=True` goes on from the newest checkpoint in
 `out` (Simulation.resume). Bad input raises sluice.InputError, a run gone wrong
 sluice.DivergenceError.)doc")
       .def(py::init<const io::CaseConfig&, std::optional<std::string>, int, std::optional<double>,
-                    bool, bool>(),
+                    bool, bool, std::optional<std::string>>(),
            py::arg("case"), py::arg("out") = py::none(), py::arg("threads") = 0,
-           py::arg("end") = py::none(), py::arg("resume") = false, py::arg("progress") = false)
+           py::arg("end") = py::none(), py::arg("resume") = false, py::arg("progress") = false,
+           py::arg("device") = py::none())
       .def_static(
           "resume",
           [](const io::CaseConfig& config, const std::string& out, int threads,

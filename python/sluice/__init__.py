@@ -5,9 +5,10 @@
     sim = sluice.Simulation(case, out="out/dam_break", threads=2)
     sim.run(every=0.05, callback=lambda s: print(s.time, s.probes()))
     positions = sim.fields(copy=True)["position"]
+    rows = sluice.sweep("cases/dam_break_2d.yaml", set={"spacing": [0.02, 0.01]})
 
 docs/python.md describes every call.
 """
-from ._sluice import Case, DivergenceError, InputError, Simulation
+from ._sluice import Case, DivergenceError, InputError, Simulation, compare, sweep
 
-__all__ = ["Case", "DivergenceError", "InputError", "Simulation"]
+__all__ = ["Case", "DivergenceError", "InputError", "Simulation", "compare", "sweep"]

@@ -1,5 +1,6 @@
 # Type stubs of the sluice package (its compiled part, _sluice). docs/python.md describes each call.
-from typing import Any, Callable, Optional
+import os
+from typing import Any, Callable, Optional, Sequence, Union
 
 import numpy.typing as npt
 
@@ -34,7 +35,7 @@ class Simulation:
     """A case's run, stepped from Python; writes what `sluice run` writes into `out`."""
     def __init__(self, case: Case, out: Optional[str] = None, threads: int = 0,
                  end: Optional[float] = None, resume: bool = False,
-                 progress: bool = False) -> None: ...
+                 progress: bool = False, device: Optional[str] = None) -> None: ...
     @staticmethod
     def resume(case: Case, out: str, threads: int = 0,
                end: Optional[float] = None) -> Simulation: ...
@@ -61,3 +62,14 @@ class Simulation:
     def probes(self) -> dict[str, float]: ...
     def bodies(self) -> dict[str, dict[str, Any]]: ...
     def summary(self) -> dict[str, Any]: ...
+
+def sweep(case: Union[str, os.PathLike[str]], set: dict[str, Any],
+          out: Optional[Union[str, os.PathLike[str]]] = None, jobs: int = 0,
+          end: Optional[float] = None, progress: bool = True) -> list[dict[str, Any]]:
+    """Runs the case for every combination of `set`'s values; one row per run."""
+
+def compare(case: Union[str, os.PathLike[str]], models: Sequence[str] = ...,
+            set: dict[str, Any] = ..., out: Optional[Union[str, os.PathLike[str]]] = None,
+            jobs: int = 1, end: Optional[float] = None,
+            progress: bool = True) -> list[dict[str, Any]]:
+    """Runs the case with each fluid model; one row per model."""

@@ -1,4 +1,4 @@
-#include "compare_command.hpp"
+#include "sluice/study/compare.hpp"
 
 #include <fmt/format.h>
 
@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "child_runs.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/io/compare_table.hpp"
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/io/yaml_reader.hpp"
 #include "sluice/models/shipped_models.hpp"
 #include "sluice/sim/runner.hpp"
+#include "sluice/study/child_runs.hpp"
 
 namespace sluice {
 
@@ -33,15 +33,11 @@ std::vector<std::string> models_to_run(const CompareOptions& o, const io::CaseCo
   }
   std::vector<std::string> models;
   if (!o.models.empty()) {
-    std::size_t start = 0;
-    while (start <= o.models.size()) {
-      const std::size_t comma = std::min(o.models.find(',', start), o.models.size());
-      const std::string name = o.models.substr(start, comma - start);
+    for (const std::string& name : o.models) {
       if (std::find(known.begin(), known.end(), name) == known.end()) {
         throw InputError("--models: " + io::unknown_choice("fluid model", name, known));
       }
       if (std::find(models.begin(), models.end(), name) == models.end()) models.push_back(name);
-      start = comma + 1;
     }
   } else if (!base.compare.empty()) {
     for (const io::CompareEntry& entry : base.compare) models.push_back(entry.model);
@@ -80,7 +76,23 @@ ModelRun model_run(const std::string& model, const io::CaseConfig& base,
 
 }  // namespace
 
-int run_compare(const CompareOptions& o) {
+std::vector<std::string> split_model_list(const std::string& models) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= models.size()) {
+    const std::size_t comma = std::min(models.find(',', start), models.size());
+    names.push_back(models.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return names;
+}
+
+bool CompareOutcome::all_done() const {
+  return std::all_of(results.begin(), results.end(),
+                     [](const io::CompareResult& r) { return r.status == "done"; });
+}
+
+CompareOutcome run_compare(const CompareOptions& o) {
   const io::CaseConfig base = io::read_case(o.case_path, o.settings);
   const std::vector<std::string> known = model_names(base.dimension);
   const std::vector<std::string> models = models_to_run(o, base, known);
@@ -91,7 +103,8 @@ int run_compare(const CompareOptions& o) {
     runs.push_back(model_run(model, base, o.settings));
     check_case(io::read_case(o.case_path, runs.back().overrides), o.hypre);
   }
-  const std::string out_dir = o.out_dir.empty() ? "out/compare_" + base.name : o.out_dir;
+  CompareOutcome outcome{o.out_dir.empty() ? "out/compare_" + base.name : o.out_dir, {}};
+  const std::string& out_dir = outcome.out_dir;
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);
   if (error) {
@@ -99,37 +112,41 @@ int run_compare(const CompareOptions& o) {
   }
   const int jobs = std::clamp(o.jobs, 1, static_cast<int>(runs.size()));
   const int threads = threads_per_run(jobs);
-  fmt::print("compare: {} models on {} ({} at once, {} thread{} each) in {}\n", runs.size(),
-             o.case_path, jobs, threads, threads > 1 ? "s" : "", out_dir);
-  std::fflush(stdout);
+  if (o.report) {
+    fmt::print("compare: {} models on {} ({} at once, {} thread{} each) in {}\n", runs.size(),
+               o.case_path, jobs, threads, threads > 1 ? "s" : "", out_dir);
+    std::fflush(stdout);
+  }
 
-  std::vector<io::CompareResult> results(runs.size());
+  std::vector<io::CompareResult>& results = outcome.results;
+  results.resize(runs.size());
   std::vector<ChildRun> children;
   for (const ModelRun& run : runs)
-    children.push_back(sluice_run(o.self, o.case_path, out_dir + "/" + run.model, threads,
+    children.push_back(sluice_run(o.program, o.case_path, out_dir + "/" + run.model, threads,
                                   o.end_time, run.overrides));
   std::size_t finished = 0;
-  run_children(children, jobs, [&](std::size_t k, const ChildOutcome& outcome) {
+  run_children(children, jobs, [&](std::size_t k, const ChildOutcome& child) {
     io::CompareResult& r = results[k];
     r.model = runs[k].model;
     r.settings = runs[k].settings;
-    r.status = outcome.status;
+    r.status = child.status;
     const std::string dir = out_dir + "/" + r.model;
     if (r.status == "done") read_compare_figures(dir, base.probes, base.dimension, r);
+    if (!o.report) return;
     fmt::print("[{}/{}] {}: {} in {:.1f} s{}\n", ++finished, runs.size(), r.model, r.status,
-               outcome.seconds, r.status == "done" ? "" : " (see " + dir + ".log)");
+               child.seconds, r.status == "done" ? "" : " (see " + dir + ".log)");
     std::fflush(stdout);
   });
   io::write_file_atomically(out_dir + "/compare.csv", io::compare_table_csv(results));
   io::write_file_atomically(out_dir + "/compare.md", io::compare_table_markdown(results));
-  fmt::print("table: {0}/compare.csv, {0}/compare.md\n", out_dir);
-  std::fflush(stdout);
+  if (o.report) {
+    fmt::print("table: {0}/compare.csv, {0}/compare.md\n", out_dir);
+    std::fflush(stdout);
+  }
   std::vector<std::string> plot_args{out_dir};
   plot_args.insert(plot_args.end(), models.begin(), models.end());
-  draw_plots("plot_compare.py", plot_args);
-  const bool all_done = std::all_of(results.begin(), results.end(),
-                                    [](const io::CompareResult& r) { return r.status == "done"; });
-  return all_done ? kExitOk : kExitDiverged;
+  draw_plots("plot_compare.py", plot_args, o.report);
+  return outcome;
 }
 
 }  // namespace sluice

@@ -1,4 +1,4 @@
-#include "sweep_command.hpp"
+#include "sluice/study/sweep.hpp"
 
 #include <fmt/format.h>
 
@@ -6,17 +6,22 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "child_runs.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/io/case_config.hpp"
 #include "sluice/io/sweep_plan.hpp"
 #include "sluice/io/sweep_table.hpp"
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/sim/runner.hpp"
+#include "sluice/study/child_runs.hpp"
 
 namespace sluice {
 
-int run_sweep(const SweepOptions& o) {
+bool SweepOutcome::all_done() const {
+  return std::all_of(results.begin(), results.end(),
+                     [](const io::SweepResult& r) { return r.status == "done"; });
+}
+
+SweepOutcome run_sweep(const SweepOptions& o) {
   std::vector<io::SweepSetting> settings;
   for (const std::string& s : o.settings) settings.push_back(io::parse_sweep_setting(s));
   const std::vector<io::SweepRun> runs = io::sweep_runs(settings);
@@ -29,7 +34,8 @@ int run_sweep(const SweepOptions& o) {
     check_case(config, o.hypre);
     name = config.name;
   }
-  const std::string out_dir = o.out_dir.empty() ? "out/sweep_" + name : o.out_dir;
+  SweepOutcome outcome{o.out_dir.empty() ? "out/sweep_" + name : o.out_dir, keys, {}};
+  const std::string& out_dir = outcome.out_dir;
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);
   if (error) {
@@ -39,36 +45,41 @@ int run_sweep(const SweepOptions& o) {
   const int jobs =
       std::clamp(o.jobs > 0 ? o.jobs : threads_per_run(1), 1, static_cast<int>(runs.size()));
   const int threads = threads_per_run(jobs);
-  fmt::print("sweep: {} runs of {} ({} at once, {} thread{} each) in {}\n", runs.size(),
-             o.case_path, jobs, threads, threads > 1 ? "s" : "", out_dir);
+  if (o.report) {
+    fmt::print("sweep: {} runs of {} ({} at once, {} thread{} each) in {}\n", runs.size(),
+               o.case_path, jobs, threads, threads > 1 ? "s" : "", out_dir);
+    std::fflush(stdout);
+  }
 
-  std::vector<io::SweepResult> results(runs.size());
+  std::vector<io::SweepResult>& results = outcome.results;
+  results.resize(runs.size());
   const auto dir_of = [&](std::size_t k) { return fmt::format("{}/run_{:03d}", out_dir, k + 1); };
   std::vector<ChildRun> children;
   for (std::size_t k = 0; k < runs.size(); ++k)
     children.push_back(
-        sluice_run(o.self, o.case_path, dir_of(k), threads, o.end_time, runs[k].overrides));
+        sluice_run(o.program, o.case_path, dir_of(k), threads, o.end_time, runs[k].overrides));
   std::size_t finished = 0;
-  run_children(children, jobs, [&](std::size_t k, const ChildOutcome& outcome) {
+  run_children(children, jobs, [&](std::size_t k, const ChildOutcome& child) {
     io::SweepResult& r = results[k];
     r.values = runs[k].values;
-    r.status = outcome.status;
+    r.status = child.status;
     if (r.status == "done") r.measurements = io::read_run_measurements(dir_of(k) + "/stats.json");
+    if (!o.report) return;
     std::string label;
     for (std::size_t a = 0; a < keys.size(); ++a)
       label += fmt::format("{}{}={}", a ? " " : "", keys[a], r.values[a]);
     fmt::print("[{}/{}] run_{:03d} {}: {} in {:.1f} s{}\n", ++finished, runs.size(), k + 1, label,
-               r.status, outcome.seconds, r.status == "done" ? "" : " (see " + dir_of(k) + ".log)");
+               r.status, child.seconds, r.status == "done" ? "" : " (see " + dir_of(k) + ".log)");
     std::fflush(stdout);
   });
   io::write_file_atomically(out_dir + "/summary.csv", io::sweep_table_csv(keys, results));
   io::write_file_atomically(out_dir + "/summary.md", io::sweep_table_markdown(keys, results));
-  fmt::print("summary: {0}/summary.csv, {0}/summary.md\n", out_dir);
-  std::fflush(stdout);
-  draw_plots("plot_sweep.py", {out_dir});
-  const bool all_done = std::all_of(results.begin(), results.end(),
-                                    [](const io::SweepResult& r) { return r.status == "done"; });
-  return all_done ? kExitOk : kExitDiverged;
+  if (o.report) {
+    fmt::print("summary: {0}/summary.csv, {0}/summary.md\n", out_dir);
+    std::fflush(stdout);
+  }
+  draw_plots("plot_sweep.py", {out_dir}, o.report);
+  return outcome;
 }
 
 }  // namespace sluice

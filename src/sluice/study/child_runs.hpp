@@ -1,5 +1,5 @@
-// Runs of `sluice run` started by `sluice sweep` and `sluice compare`: each a child process with
-// its messages in a log file, several at once where the cores allow.
+// Runs of `sluice run` started by a sweep and a comparison (sweep.hpp, compare.hpp): each a child
+// process with its messages in a log file, several at once where the cores allow.
 #pragma once
 
 #include <functional>
@@ -39,11 +39,12 @@ std::string this_program();
 
 // Runs `/usr/bin/python3 SLUICE_SOURCE_DIR/scripts/SCRIPT ARGS...` (Debian's matplotlib) and
 // waits for it: its exit code, or nothing where python3 or the script is missing or it did not
-// exit.
-std::optional<int> run_script(const std::string& script, const std::vector<std::string>& args);
+// exit. With `log`, its stdout and stderr go to that file.
+std::optional<int> run_script(const std::string& script, const std::vector<std::string>& args,
+                              const std::string& log = "");
 
-// run_script, saying so on stdout when it could not run or failed: plots that a run's table
-// does without.
-void draw_plots(const std::string& script, const std::vector<std::string>& args);
+// run_script, with `report` saying so on stdout when it could not run or failed: plots that a
+// run's table does without.
+void draw_plots(const std::string& script, const std::vector<std::string>& args, bool report);
 
 }  // namespace sluice

@@ -1,4 +1,4 @@
-#include "child_runs.hpp"
+#include "sluice/study/child_runs.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -124,19 +124,21 @@ std::string this_program() {
   return std::string(self, static_cast<std::size_t>(length));
 }
 
-std::optional<int> run_script(const std::string& script, const std::vector<std::string>& args) {
+std::optional<int> run_script(const std::string& script, const std::vector<std::string>& args,
+                              const std::string& log) {
   const std::string path = std::string(SLUICE_SOURCE_DIR) + "/scripts/" + script;
   const std::string python = "/usr/bin/python3";
   if (access(path.c_str(), R_OK) != 0 || access(python.c_str(), X_OK) != 0) return std::nullopt;
   std::vector<std::string> command{python, path};
   command.insert(command.end(), args.begin(), args.end());
   int status = 0;
-  if (waitpid(spawn(command), &status, 0) < 0 || !WIFEXITED(status)) return std::nullopt;
+  if (waitpid(spawn(command, log), &status, 0) < 0 || !WIFEXITED(status)) return std::nullopt;
   return WEXITSTATUS(status);
 }
 
-void draw_plots(const std::string& script, const std::vector<std::string>& args) {
-  const std::optional<int> code = run_script(script, args);
+void draw_plots(const std::string& script, const std::vector<std::string>& args, bool report) {
+  const std::optional<int> code = run_script(script, args, report ? "" : "/dev/null");
+  if (!report) return;
   if (!code) {
     fmt::print("plots: not drawn (/usr/bin/python3 or scripts/{} missing, or it was stopped)\n",
                script);

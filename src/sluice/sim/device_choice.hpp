@@ -1,0 +1,22 @@
+// Where a run's loops run (`--device`, `Simulation(device=...)`): the CPU, a GPU, or the GPU's
+// code emulated on the CPU. The choice is the model's `device` key; a model that runs only on the
+// CPU has no such key, so the choice is checked against the models first.
+#pragma once
+
+#include <string>
+
+#include "sluice/io/case_config.hpp"
+
+namespace sluice {
+
+// Throws InputError naming `option` when `device` is none of cpu, gpu and emulated, or when the
+// case's model does not run on it ("--device: the gpu device runs the wcsph model only, not
+// 'mac'").
+void check_device(const io::CaseConfig& config, const std::string& device,
+                  const std::string& option);
+
+// The --set override that puts the case's model on `device` ("model.device=gpu"); none for the
+// CPU.
+std::string device_override(const std::string& device);
+
+}  // namespace sluice

@@ -1,0 +1,38 @@
+// A parameter sweep (`sluice sweep CASE --set KEY=V1,V2,...`, `sluice.sweep` in Python): runs
+// the case for every combination of the values, each as a child `sluice run` in OUT/run_NNN,
+// several at once where the cores allow, then writes OUT/summary.csv and OUT/summary.md and
+// draws OUT/summary_*.png.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sluice/io/sweep_table.hpp"
+
+namespace sluice {
+
+class HypreSession;  // linear/hypre_session.hpp
+
+struct SweepOptions {
+  std::string case_path;
+  std::vector<std::string> settings;  // the --set arguments
+  std::string out_dir;                // default: out/sweep_CASE_NAME
+  int jobs = 0;                       // runs at once; 0 = as many as cores, at most the runs
+  double end_time = 0;                // 0 = the case's
+  std::string program;                // the sluice executable, which runs each case
+  HypreSession* hypre = nullptr;      // the process's, for the checks (sim/runner.hpp)
+  bool report = true;                 // a line on stdout as each run ends
+};
+
+struct SweepOutcome {
+  std::string out_dir;
+  std::vector<std::string> keys;         // the swept keys, one per axis
+  std::vector<io::SweepResult> results;  // one per run, in the order of run_NNN
+  bool all_done() const;
+};
+
+// Checks every combination first, as `sluice check` (bad input: InputError before anything
+// runs or is written), then runs them. A run that diverges or fails is a row with its status.
+SweepOutcome run_sweep(const SweepOptions& options);
+
+}  // namespace sluice
