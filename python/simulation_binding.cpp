@@ -250,6 +250,8 @@ py::dict bodies_of(const CaseRun& run) {
   const RigidBodies& bodies = run.bodies();
   const auto& force = run.coupler().fluid_force();
   const auto& moment = run.coupler().fluid_moment();
+  const auto& contact_force = bodies.system().contact_force();
+  const auto& contact_moment = bodies.system().contact_torque();
   for (std::size_t b = 0; b < bodies.count(); ++b) {
     const RigidBody& s = bodies.state(b);
     const Eigen::Quaterniond q = bodies.shape_orientation(b);
@@ -260,6 +262,8 @@ py::dict bodies_of(const CaseRun& run) {
     body["angular_velocity"] = vector_array(s.inverse_world_inertia() * s.angular_momentum);
     body["fluid_force"] = vector_array(b < force.size() ? force[b] : Vec3::Zero());
     body["fluid_moment"] = vector_array(b < moment.size() ? moment[b] : Vec3::Zero());
+    body["contact_force"] = vector_array(contact_force[b]);
+    body["contact_moment"] = vector_array(contact_moment[b]);
     body["mass"] = s.mass;
     out[py::str(bodies.config(b).name)] = body;
   }
@@ -381,10 +385,31 @@ the cell sort reorders the particles and the arrays may move. Keep `copy=True` o
           },
           "Each probe's reading now, by its probes.csv label ('P1 [Pa]').")
       .def(
+          "probe_record",
+          [](const Simulation& s) {
+            const auto& rows = s.run().probe_record();
+            std::vector<std::string> labels{"time [s]"};
+            for (const std::string& label : s.run().probe_labels()) labels.push_back(label);
+            py::dict out;
+            for (std::size_t k = 0; k < labels.size(); ++k) {
+              py::array_t<double> column(static_cast<py::ssize_t>(rows.size()));
+              auto values = column.mutable_unchecked<1>();
+              for (std::size_t r = 0; r < rows.size(); ++r) {
+                values(static_cast<py::ssize_t>(r)) = rows[r][k];
+              }
+              out[py::str(labels[k])] = column;
+            }
+            return out;
+          },
+          "The probes as probes.csv records them, on the case's probe_interval, since this "
+          "simulation began (a resumed one: since its checkpoint): numpy arrays by label, "
+          "'time [s]' first, then each probe's ('P1 [Pa]', 'front [m]'); copies.")
+      .def(
           "bodies", [](const Simulation& s) { return bodies_of(s.run()); },
           "Each body by name: position (its centre of mass), orientation (x, y, z, w), velocity, "
           "angular_velocity, the fluid's force and moment (about the centre of mass) as held "
-          "over the last step, and mass; vectors in 3D (a 2D case's y is 0).")
+          "over the last step, the contacts' force and moment (other bodies' and the walls') "
+          "at the last solid sub-step, and mass; vectors in 3D (a 2D case's y is 0).")
       .def(
           "summary",
           [](const Simulation& s) {

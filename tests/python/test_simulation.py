@@ -89,7 +89,14 @@ def test_the_same_answer_as_the_command_line(small_dam_break, tmp_path):
                     "--set", "end_time=0.1", "--threads", "1", "--out", str(tmp_path / "cli")],
                    check=True, capture_output=True)
     with open(tmp_path / "python" / "probes.csv") as a, open(tmp_path / "cli" / "probes.csv") as b:
-        assert list(csv.reader(a)) == list(csv.reader(b))
+        rows = list(csv.reader(a))
+        assert rows == list(csv.reader(b))
+    # probe_record() holds what probes.csv holds, to the file's digits.
+    record = sim.probe_record()
+    assert list(record) == rows[0]
+    for k, label in enumerate(rows[0]):
+        np.testing.assert_allclose(record[label], [float(r[k]) for r in rows[1:]], rtol=1e-8,
+                                   atol=1e-9)
 
 
 def test_bodies_and_their_loads(tmp_path):
@@ -103,6 +110,24 @@ def test_bodies_and_their_loads(tmp_path):
     assert box["mass"] > 0
     # Floating: the water holds up about its weight (within the start's transient).
     assert box["fluid_force"][2] > 0
+    np.testing.assert_array_equal(box["contact_force"], [0, 0, 0])  # it touches nothing
+
+
+def test_contact_loads_carry_the_weight(tmp_path):
+    """cases/resting_cubes.yaml: a cube on the floor, and a stack of three; the floor carries
+    each bottom cube's load, the weight of what stands on it."""
+    case = sluice.Case.from_yaml(case_path("resting_cubes"), set={"end_time": 0.3})
+    sim = sluice.Simulation(case, out=str(tmp_path), threads=1)
+    sim.run()
+    bodies = sim.bodies()
+    weight = bodies["single"]["mass"] * 9.81
+    # The stack settles by 0.3 s: each body's contact load is its weight to 0.3 % (the springs'
+    # last oscillation), against a bar of 2 %.
+    assert bodies["single"]["contact_force"][2] == pytest.approx(weight, rel=0.02)
+    assert bodies["stack_top"]["contact_force"][2] == pytest.approx(weight, rel=0.02)
+    # The bottom cube: the floor's push up, less the two cubes' weight on it.
+    assert bodies["stack_bottom"]["contact_force"][2] == pytest.approx(weight, rel=0.02)
+    assert abs(bodies["single"]["contact_force"][0]) < 0.01 * weight
 
 
 def test_a_checkpoint_resumes_to_the_same_state(small_dam_break, tmp_path):

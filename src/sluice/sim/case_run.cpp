@@ -298,6 +298,9 @@ void CaseRun::command_velocity(std::size_t b, const Vec3& velocity, const Vec3& 
 std::vector<std::string> CaseRun::probe_labels() const {
   return outputs_->probes->labels();
 }
+const std::vector<std::vector<double>>& CaseRun::probe_record() const {
+  return outputs_->probes->recorded();
+}
 std::vector<double> CaseRun::probe_values() const {
   return outputs_->probes->measure(sim_->fluid().observation());
 }

@@ -67,6 +67,9 @@ class CaseRun {
   // Each probe's column label ("front [m]") and its value now.
   std::vector<std::string> probe_labels() const;
   std::vector<double> probe_values() const;
+  // The probes' rows recorded by this run so far (a resumed run's since its checkpoint), as
+  // probes.csv holds them: the time, then each probe's value.
+  const std::vector<std::vector<double>>& probe_record() const;
 
  private:
   struct Outputs;  // case_run.cpp

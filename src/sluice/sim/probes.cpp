@@ -44,10 +44,10 @@ void Probes::record(double time, const FluidObservation& fluid) {
   if (probes_.empty()) return;
   // Measured on every rank (the readings add up over them), written where the file is.
   const std::vector<double> values = measure(fluid);
-  if (!csv_) return;
   std::vector<double> row{time};
   row.insert(row.end(), values.begin(), values.end());
-  csv_->row(row);
+  if (csv_) csv_->row(row);
+  recorded_.push_back(std::move(row));
 }
 
 }  // namespace sluice

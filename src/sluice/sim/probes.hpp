@@ -20,8 +20,11 @@ class Probes {
          io::CsvStart start = io::CsvStart::kNew);
 
   bool empty() const { return probes_.empty(); }
-  // Appends one row for the time.
+  // Appends one row for the time, to the file and to recorded().
   void record(double time, const FluidObservation& fluid);
+  // The rows this object recorded (a resumed run's since its checkpoint): the time, then each
+  // probe's value; a few numbers a probe time, kept for a caller that steps the run.
+  const std::vector<std::vector<double>>& recorded() const { return recorded_; }
   // Each probe's column label, its name and unit: "front [m]", "P1 [Pa]".
   std::vector<std::string> labels() const;
   // The values of one row, in the order of the case's probes (used by tests too).
@@ -34,6 +37,7 @@ class Probes {
  private:
   std::vector<io::ProbeConfig> probes_;
   std::unique_ptr<io::CsvWriter> csv_;
+  std::vector<std::vector<double>> recorded_;
 };
 
 }  // namespace sluice
