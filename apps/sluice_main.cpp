@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
       ->check(sluice::positive_seconds());
 
   std::vector<std::string> render_args(1);  // OUT, then the options as render.py reads them
-  std::string render_field, render_view;
+  std::string render_field, render_view, render_time;
   int render_width = 0;
   bool render_movie = false;
   CLI::App* render = app.add_subcommand(
@@ -142,6 +142,8 @@ int main(int argc, char** argv) {
   render->add_option("--view", render_view, "side (x-z, the default), top (x-y) or iso")
       ->check(CLI::IsMember({"side", "top", "iso"}));
   render->add_flag("--movie", render_movie, "an MP4 of the pictures too (ffmpeg)");
+  render->add_option("--time", render_time,
+                     "one picture: the frame nearest this time [s] (default: every frame)");
   render->add_option("--width", render_width, "the pictures' width in pixels (default: 1280)")
       ->check(CLI::Range(16, 16384));
 
@@ -181,6 +183,7 @@ int main(int argc, char** argv) {
       if (render_width > 0)
         render_args.insert(render_args.end(), {"--width", std::to_string(render_width)});
       if (render_movie) render_args.emplace_back("--movie");
+      if (!render_time.empty()) render_args.insert(render_args.end(), {"--time", render_time});
       const std::optional<int> code = sluice::run_script("render.py", render_args);
       if (!code) {
         fmt::print(stderr, "error: render: /usr/bin/python3 or scripts/render.py is missing\n");

@@ -2,20 +2,23 @@
 """`sluice render OUT`: PNG pictures of a run's frames, and with --movie an MP4 (ffmpeg).
 
 Reads the series OUT/CASE.pvd and draws each frame's points: the water coloured by a field
-(its magnitude, for a vector), walls light grey behind everything, bodies dark grey, seen from
-the side (x-z), the top (x-y) or an isometric corner, the nearest points drawn last. The points are splatted as
-discs into an image of their own (numpy), which matplotlib frames with the time and a colour
-bar: 0.6 s for the 262,000 particles of the benchmark case seen from the side, about 1 s
-isometric (docs/performance.md). The colour scale
-spans the field's 1st to 99th percentile over every frame's water, so that colours mean the same
-in every picture. A grid model's (mac) frames are drawn from its grid: the water's cells
+(its magnitude, for a vector), walls light grey behind everything, bodies in darker greys (one
+each, shaded), seen from the side (x-z), the top (x-y) or an isometric corner, the nearest
+points drawn last. The points are splatted as discs into an image of their own (numpy), which
+matplotlib frames with the time and a colour bar: 0.3 s for the 262,000 particles of the
+benchmark case seen from the side, 0.5 s isometric (docs/performance.md). The colour scale
+spans the field's 1st to 99th percentile over every frame's water, so that colours mean the
+same in every picture. A grid model's (mac) frames are drawn from its grid: the water's cells
 (level_set below 0) coloured by the field, the solid cells as walls.
 
 Writes OUT/render/FIELD_VIEW_NNNNNN.png, and with --movie OUT/render/FIELD_VIEW.mp4.
-Exit codes as sluice's: 2 for bad input (no series in OUT, an unknown field, no ffmpeg).
+Exit codes as sluice's: 2 for bad input (no series in OUT, an unknown field, no ffmpeg, a
+--time that is not a number).
+
+With --time T, one picture: the frame nearest T, its colour scale over that frame alone.
 
 usage: /usr/bin/python3 scripts/render.py OUT [--field F] [--view side|top|iso] [--movie]
-                                              [--width PIXELS] [--fps N]
+                                              [--width PIXELS] [--fps N] [--time T]
 """
 import argparse
 import glob
@@ -37,7 +40,8 @@ from vtkmodules.vtkIOXML import vtkXMLPPolyDataReader, vtkXMLPolyDataReader
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation"))
 import frames as validation_frames  # noqa: E402
 
-WALL, BODY, BACKGROUND = (0.82, 0.82, 0.82), (0.35, 0.35, 0.38), (1.0, 1.0, 1.0)
+WALL, BACKGROUND = (0.82, 0.82, 0.82), (1.0, 1.0, 1.0)
+BODY_GREYS = np.array([0.30, 0.46, 0.38, 0.54, 0.34])  # one per body, in turn
 WATER = (0.16, 0.44, 0.78)  # where the frames hold no field
 AIR = -1  # a grid's cell that is neither water nor solid: framed, not drawn
 COS30, SIN30 = np.cos(np.pi / 6), np.sin(np.pi / 6)
@@ -115,14 +119,21 @@ def scalar(values):
 
 
 def lattice_spacing(points, fields):
-    """The particles' spacing: the middle gap between neighbouring distinct x coordinates of the
-    first frame's water, which starts on a lattice (all points where it has none)."""
+    """The particles' spacing: the middle distance from a sample of the first frame's water
+    (of every point, where there is no water: bodies alone) to its nearest other water point;
+    a lattice's spacing, and a settled pool's (granular) too."""
     kind = fields.get("kind")
-    water = points[kind == 0] if kind is not None and np.any(kind == 0) else points
-    xs = np.unique(np.round(water[:, 0], 6))
-    gaps = np.diff(xs)
-    gaps = gaps[gaps > 1e-6]
-    return float(np.median(gaps)) if gaps.size else 0.01
+    if kind is not None and np.any(kind == 0):
+        points = points[kind == 0]
+    if len(points) < 2:
+        return 0.01
+    sample = points[np.linspace(0, len(points) - 1, min(len(points), 400)).astype(int)]
+    nearest = np.full(len(sample), np.inf)
+    for start in range(0, len(points), 20000):  # in blocks: 400 x 20000 distances at a time
+        d = np.linalg.norm(sample[:, None, :] - points[None, start:start + 20000, :], axis=2)
+        d[d < 1e-9] = np.inf  # the point itself
+        nearest = np.minimum(nearest, d.min(axis=1))
+    return float(np.median(nearest[np.isfinite(nearest)])) if np.isfinite(nearest).any() else 0.01
 
 
 class Canvas:
@@ -141,16 +152,18 @@ class Canvas:
 
     def draw(self, points, colours, behind, view):
         """An image (height x width x 3) of the points as discs: those `behind` (the walls) first,
-        as a backdrop, then the others, the nearest drawn last."""
-        image = np.empty((self.height, self.width, 3))
-        image[:] = BACKGROUND
+        as a backdrop, then the others, the nearest drawn last. Each pixel takes the colour of
+        the last point in that order whose disc covers it."""
         u, v, depth = projection(points, view)
         # Farthest first, so that the nearest overwrite them; the walls before everything, or
         # a 3D tank's near walls would hide the water.
         order = np.lexsort((-depth, ~behind))
         col = ((u[order] - self.u0) * self.scale).astype(np.int64)
         row = self.height - 1 - ((v[order] - self.v0) * self.scale).astype(np.int64)
-        rgb = colours[order]
+        rank = np.arange(len(order))
+        # The latest rank that covers each pixel, over the disc's offsets one at a time: within
+        # one offset a pixel written twice keeps the later write, the larger rank.
+        latest = np.full(self.height * self.width, -1, dtype=np.int64)
         r = self.radius
         for dr in range(-r, r + 1):
             for dc in range(-r, r + 1):
@@ -158,19 +171,49 @@ class Canvas:
                     continue
                 rr, cc = row + dr, col + dc
                 inside = (rr >= 0) & (rr < self.height) & (cc >= 0) & (cc < self.width)
-                image[rr[inside], cc[inside]] = rgb[inside]
-        return image
+                pixel = rr[inside] * self.width + cc[inside]
+                latest[pixel] = np.maximum(latest[pixel], rank[inside])
+        image = np.empty((self.height * self.width, 3))
+        image[:] = BACKGROUND
+        drawn = latest >= 0
+        image[drawn] = colours[order][latest[drawn]]
+        return image.reshape(self.height, self.width, 3)
 
 
-def colours_of(fields, n, field, norm, cmap):
+def body_shades(points, index):
+    """Each body point's lightness, 0.45 to 1: lit from above and in front, its normal taken
+    from its offset from its body's centre over the body's half size along each axis."""
+    light = np.array([-0.4, -0.7, 1.0]) / np.linalg.norm([-0.4, -0.7, 1.0])
+    shade = np.ones(len(points))
+    for b in np.unique(index):
+        mine = index == b
+        p = points[mine]
+        centre = 0.5 * (p.min(axis=0) + p.max(axis=0))
+        half = 0.5 * (p.max(axis=0) - p.min(axis=0))
+        offset = np.divide(p - centre, half, out=np.zeros_like(p), where=half > 1e-12)
+        # Raised to a power, so that a box's faces read flat (their offset's largest component
+        # is 1, the others below it) while curved surfaces still shade smoothly.
+        offset = np.sign(offset) * np.abs(offset) ** 6
+        normal = offset / np.maximum(np.linalg.norm(offset, axis=1), 1e-12)[:, None]
+        shade[mine] = 0.45 + 0.55 * np.clip(normal @ light, 0, 1)
+    return shade
+
+
+def colours_of(points, fields, field, norm, cmap):
     """Each point's colour: water by the field (a grid model's surface, which has none, in one
-    blue), walls and bodies in greys."""
+    blue), walls light grey, bodies in darker greys, a grey of their own each (by the frame's
+    `body` index) and shaded, so that bodies side by side or stacked read."""
+    n = len(points)
     kind = fields.get("kind", np.zeros(n, dtype=np.int32))
     colours = np.empty((n, 3))
     water = kind == 0
     colours[water] = cmap(norm(scalar(fields[field])[water]))[:, :3] if field else WATER
     colours[kind == 1] = WALL
-    colours[(kind == 2) | (kind == 3)] = BODY
+    body = (kind == 2) | (kind == 3)
+    if np.any(body):
+        index = fields.get("body", np.zeros(n, dtype=np.int32))[body].astype(np.int64)
+        grey = BODY_GREYS[index % len(BODY_GREYS)] * 1.6 * body_shades(points[body], index)
+        colours[body] = np.clip(grey, 0, 1)[:, None]
     return colours
 
 
@@ -182,21 +225,35 @@ def main():
     parser.add_argument("--movie", action="store_true", help="an MP4 of the frames (ffmpeg)")
     parser.add_argument("--width", type=int, default=1280, help="the pictures' width [px]")
     parser.add_argument("--fps", type=int, default=10, help="the movie's frames a second")
+    parser.add_argument("--time", help="one picture: the frame nearest this time [s]")
     args = parser.parse_args()
     if args.width < 16:
         raise BadInput(f"--width: {args.width} pixels is too narrow (16 at least)")
     name, frames = series(args.out)
     first_points, first_fields = read_frame(frames[0][1])
-    # A frame with no fields (bodies alone) is drawn in one colour.
-    field = args.field if set(first_fields) - {"kind", "body"} else None
+    # A frame without water (bodies alone) has no colour scale.
+    kind = first_fields.get("kind", np.zeros(len(first_points), np.int32))
+    field = args.field if np.any(kind == 0) and set(first_fields) - {"kind", "body"} else None
     if field and field not in first_fields:
         raise BadInput(f"--field: {frames[0][1]} has no field '{args.field}'; it has "
                        + ", ".join(sorted(first_fields)))
     if args.movie and subprocess.run(["which", "ffmpeg"], capture_output=True).returncode:
         raise BadInput("--movie: ffmpeg not found (Debian's ffmpeg; scripts/setup.sh installs it)")
-    # The colour scale over every frame's water.
+    # Each frame keeps its place in the series: its picture's number.
+    shown_frames = list(enumerate(frames))
+    if args.time is not None:
+        if args.movie:
+            raise BadInput("--time: one picture makes no movie; give --time or --movie")
+        try:
+            wanted = float(args.time)
+        except ValueError:
+            raise BadInput(f"--time: expected a time in seconds, got '{args.time}'")
+        if not np.isfinite(wanted):
+            raise BadInput(f"--time: expected a finite time in seconds, got '{args.time}'")
+        shown_frames = [min(shown_frames, key=lambda item: abs(item[1][0] - wanted))]
+    # The colour scale over every drawn frame's water.
     samples = [np.zeros(0)]
-    for _, path in frames if field else []:
+    for _, (_, path) in shown_frames if field else []:
         _, fields = read_frame(path)
         water = fields.get("kind", np.zeros(len(fields[field]), np.int32)) == 0
         samples.append(scalar(fields[field])[water])
@@ -209,16 +266,18 @@ def main():
     target = os.path.join(args.out, "render")
     os.makedirs(target, exist_ok=True)
     stem = f"{field or 'points'}_{args.view}"
-    for old in glob.glob(os.path.join(target, f"{stem}_*.png")):
-        os.remove(old)
+    if args.time is None:
+        for old in glob.glob(os.path.join(target, f"{stem}_*.png")):
+            os.remove(old)
     dpi = 100
     seconds = []
-    for k, (t, path) in enumerate(frames):
+    written = []
+    for k, (t, path) in shown_frames:
         start = time.perf_counter()
         points, fields = read_frame(path)
         kind = fields.get("kind", np.zeros(len(points), np.int32))
         shown = kind != AIR
-        colours = colours_of(fields, len(points), field, norm, cmap)
+        colours = colours_of(points, fields, field, norm, cmap)
         image = canvas.draw(points[shown], colours[shown], kind[shown] == 1, args.view)
         fig = plt.figure(figsize=((canvas.width + 160) / dpi, (canvas.height + 70) / dpi), dpi=dpi)
         ax = fig.add_axes([0, 0, canvas.width / (canvas.width + 160),
@@ -230,11 +289,16 @@ def main():
             bar = fig.add_axes([canvas.width / (canvas.width + 160) + 0.02, 0.1, 0.025, 0.75])
             fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), cax=bar,
                          label=field)
-        fig.savefig(os.path.join(target, f"{stem}_{k:06d}.png"), dpi=dpi)
+        written.append(os.path.join(target, f"{stem}_{k:06d}.png"))
+        fig.savefig(written[-1], dpi=dpi)
         plt.close(fig)
         seconds.append(time.perf_counter() - start)
-    print(f"render: {len(frames)} frames of {name} into {target}/{stem}_*.png "
-          f"({np.median(seconds):.2f} s a frame, median; {len(first_points)} points in the first)")
+    if args.time is not None:
+        print(f"render: {written[0]} (t = {shown_frames[0][1][0]:.6g} s)")
+    else:
+        print(f"render: {len(frames)} frames of {name} into {target}/{stem}_*.png "
+              f"({np.median(seconds):.2f} s a frame, median; {len(first_points)} points in the "
+              "first)")
     if args.movie:
         movie = os.path.join(target, f"{stem}.mp4")
         subprocess.run(["ffmpeg", "-y", "-loglevel", "error", "-framerate", str(args.fps), "-i",

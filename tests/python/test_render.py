@@ -84,3 +84,21 @@ def test_a_broken_series_is_bad_input(tmp_path):
     (tmp_path / "run.pvd").write_text("<VTKFile><Collection><DataSet timestep=")
     done = render(str(tmp_path))
     assert done.returncode == 2 and "run.pvd: not a readable series" in done.stderr
+
+
+def test_one_picture_at_a_time(finished_run):
+    picture = os.path.join(finished_run, "render", "density_side_000001.png")
+    done = render(finished_run, "--field", "density", "--time", "0.06", "--width", "200")
+    assert done.returncode == 0, done.stderr
+    # The frames are at 0, 0.05 and 0.1 s: the nearest to 0.06 s is the second, alone.
+    assert done.stdout.strip() == f"render: {picture} (t = 0.05 s)"
+    assert sorted(name for name in os.listdir(os.path.join(finished_run, "render"))
+                  if name.startswith("density_side_")) == ["density_side_000001.png"]
+    assert water_pixels(matplotlib.image.imread(picture)[:, :200]).sum() > 100
+
+
+def test_a_bad_time_is_bad_input(finished_run):
+    done = render(finished_run, "--time", "soon")
+    assert done.returncode == 2 and "--time: expected a time in seconds, got 'soon'" in done.stderr
+    done = render(finished_run, "--time", "0.05", "--movie")
+    assert done.returncode == 2 and "one picture makes no movie" in done.stderr
