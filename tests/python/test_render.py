@@ -1,5 +1,6 @@
 """`sluice render` on a finished run: pictures of the right size, the water where it is, a
 movie, and bad input named."""
+import importlib.util
 import os
 import subprocess
 
@@ -102,3 +103,26 @@ def test_a_bad_time_is_bad_input(finished_run):
     assert done.returncode == 2 and "--time: expected a time in seconds, got 'soon'" in done.stderr
     done = render(finished_run, "--time", "0.05", "--movie")
     assert done.returncode == 2 and "one picture makes no movie" in done.stderr
+
+
+def test_the_nearer_point_covers_the_farther_whole():
+    """Two points seen from the side, the farther (larger y) a little above the nearer: every
+    pixel of the nearer's disc takes its colour, whichever disc offset reaches it last."""
+    spec = importlib.util.spec_from_file_location("render_script",
+                                                  os.path.join(ROOT, "scripts", "render.py"))
+    script = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    spacing = 0.1
+    frame = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 1.0]])  # the framing: 1 m by 1 m
+    canvas = script.Canvas(frame, "side", 200, spacing)
+    points = np.array([[0.5, 0.0, 0.5], [0.5, 1.0, 0.53]])  # nearer, then farther and higher
+    colours = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    image = canvas.draw(points, colours, np.array([False, False]), "side")
+    col = int((0.5 - canvas.u0) * canvas.scale)
+    row = canvas.height - 1 - int((0.5 - canvas.v0) * canvas.scale)
+    r = canvas.radius
+    disc = [(row + dr, col + dc) for dr in range(-r, r + 1) for dc in range(-r, r + 1)
+            if dr * dr + dc * dc <= r * r]
+    assert all(tuple(image[p]) == (1.0, 0.0, 0.0) for p in disc)
+    # The farther shows above it, where the nearer does not reach.
+    assert tuple(image[row - r - 2, col]) == (0.0, 0.0, 1.0)
