@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case_binding.hpp"
@@ -72,23 +73,37 @@ std::vector<std::string> every_run_settings(const py::dict& settings) {
   return out;
 }
 
-py::list sweep(const std::filesystem::path& case_path, const py::dict& settings,
-               const std::optional<std::filesystem::path>& out, int jobs, std::optional<double> end,
-               bool progress) {
-  SweepOptions o;
+// The options both studies take from Python, their runs started by this module's sluice.
+StudyOptions study_options(const std::filesystem::path& case_path,
+                           std::vector<std::string> settings,
+                           const std::optional<std::filesystem::path>& out, int jobs,
+                           std::optional<double> end, bool progress) {
+  StudyOptions o;
   o.case_path = case_path;
-  o.settings = sweep_settings(settings);
+  o.settings = std::move(settings);
   o.out_dir = out ? out->string() : "";
   o.jobs = jobs;
   o.end_time = end.value_or(0);
   o.program = sluice_executable();
   o.hypre = &hypre_session();
   o.report = progress;
-  SweepOutcome outcome;
-  {
-    const py::gil_scoped_release free_python;
-    outcome = run_sweep(o);
-  }
+  return o;
+}
+
+// The study's runs without the GIL: other Python threads go on meanwhile.
+template <class Outcome, class Options>
+Outcome run_without_the_gil(Outcome (*study)(const Options&), const Options& options) {
+  const py::gil_scoped_release free_python;
+  return study(options);
+}
+
+py::list sweep(const std::filesystem::path& case_path, const py::dict& settings,
+               const std::optional<std::filesystem::path>& out, int jobs, std::optional<double> end,
+               bool progress) {
+  SweepOptions o;
+  static_cast<StudyOptions&>(o) =
+      study_options(case_path, sweep_settings(settings), out, jobs, end, progress);
+  const SweepOutcome outcome = run_without_the_gil(&run_sweep, o);
   py::list rows;
   for (std::size_t k = 0; k < outcome.results.size(); ++k) {
     const io::SweepResult& r = outcome.results[k];
@@ -109,20 +124,10 @@ py::list compare(const std::filesystem::path& case_path, const std::vector<std::
                  const py::dict& settings, const std::optional<std::filesystem::path>& out,
                  int jobs, std::optional<double> end, bool progress) {
   CompareOptions o;
-  o.case_path = case_path;
+  static_cast<StudyOptions&>(o) =
+      study_options(case_path, every_run_settings(settings), out, jobs, end, progress);
   o.models = models;
-  o.settings = every_run_settings(settings);
-  o.out_dir = out ? out->string() : "";
-  o.jobs = jobs;
-  o.end_time = end.value_or(0);
-  o.program = sluice_executable();
-  o.hypre = &hypre_session();
-  o.report = progress;
-  CompareOutcome outcome;
-  {
-    const py::gil_scoped_release free_python;
-    outcome = run_compare(o);
-  }
+  const CompareOutcome outcome = run_without_the_gil(&run_compare, o);
   py::list rows;
   for (const io::CompareResult& r : outcome.results) {
     py::dict row;

@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <stdexcept>
 #include <thread>
@@ -58,6 +60,20 @@ struct RunningJob {
 };
 
 }  // namespace
+
+void create_study_directory(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) throw InputError(dir + ": cannot create the output directory: " + error.message());
+}
+
+void report_study_start(const StudyOptions& options, const std::string& head, int jobs, int threads,
+                        const std::string& out_dir) {
+  if (!options.report) return;
+  fmt::print("{} ({} at once, {} thread{} each) in {}\n", head, jobs, threads,
+             threads > 1 ? "s" : "", out_dir);
+  std::fflush(stdout);
+}
 
 ChildRun sluice_run(const std::string& program, const std::string& case_path,
                     const std::string& dir, int threads, double end_time,

@@ -9,6 +9,27 @@
 
 namespace sluice {
 
+class HypreSession;  // linear/hypre_session.hpp
+
+// What a sweep and a comparison share: the case, the settings of every run, where they go.
+struct StudyOptions {
+  std::string case_path;
+  std::vector<std::string> settings;  // --set arguments (a sweep's axes among them)
+  std::string out_dir;                // default: out/sweep_CASE_NAME, out/compare_CASE_NAME
+  int jobs = 0;                       // runs at once; 0: the study's default
+  double end_time = 0;                // 0 = the case's
+  std::string program;                // the sluice executable, which runs each case
+  HypreSession* hypre = nullptr;      // the process's, for the checks (sim/runner.hpp)
+  bool report = true;                 // a line on stdout as the study starts and each run ends
+};
+
+// Creates the study's output directory; InputError naming it when it cannot.
+void create_study_directory(const std::string& dir);
+
+// With options.report, "HEAD (J at once, T threads each) in OUT" on stdout.
+void report_study_start(const StudyOptions& options, const std::string& head, int jobs, int threads,
+                        const std::string& out_dir);
+
 struct ChildRun {
   std::vector<std::string> args;  // args[0] is the program
   std::string log;                // its stdout and stderr go here

@@ -12,7 +12,6 @@
 #include "sluice/io/yaml_reader.hpp"
 #include "sluice/models/shipped_models.hpp"
 #include "sluice/sim/runner.hpp"
-#include "sluice/study/child_runs.hpp"
 
 namespace sluice {
 
@@ -105,18 +104,11 @@ CompareOutcome run_compare(const CompareOptions& o) {
   }
   CompareOutcome outcome{o.out_dir.empty() ? "out/compare_" + base.name : o.out_dir, {}};
   const std::string& out_dir = outcome.out_dir;
-  std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error) {
-    throw InputError(out_dir + ": cannot create the output directory: " + error.message());
-  }
-  const int jobs = std::clamp(o.jobs, 1, static_cast<int>(runs.size()));
+  create_study_directory(out_dir);
+  const int jobs = std::clamp(o.jobs > 0 ? o.jobs : 1, 1, static_cast<int>(runs.size()));
   const int threads = threads_per_run(jobs);
-  if (o.report) {
-    fmt::print("compare: {} models on {} ({} at once, {} thread{} each) in {}\n", runs.size(),
-               o.case_path, jobs, threads, threads > 1 ? "s" : "", out_dir);
-    std::fflush(stdout);
-  }
+  report_study_start(o, fmt::format("compare: {} models on {}", runs.size(), o.case_path), jobs,
+                     threads, out_dir);
 
   std::vector<io::CompareResult>& results = outcome.results;
   results.resize(runs.size());

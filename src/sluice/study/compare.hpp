@@ -8,21 +8,14 @@
 #include <vector>
 
 #include "sluice/io/compare_table.hpp"
+#include "sluice/study/child_runs.hpp"
 
 namespace sluice {
 
-class HypreSession;  // linear/hypre_session.hpp
-
-struct CompareOptions {
-  std::string case_path;
-  std::vector<std::string> models;    // empty: the case's `compare:` entries, or all
-  std::vector<std::string> settings;  // --set for every run, after the model's own settings
-  std::string out_dir;                // default: out/compare_CASE_NAME
-  int jobs = 1;                       // runs at once: one, so that their wall times compare
-  double end_time = 0;                // 0 = the case's
-  std::string program;                // the sluice executable, which runs each case
-  HypreSession* hypre = nullptr;      // the process's, for the checks (sim/runner.hpp)
-  bool report = true;                 // a line on stdout as each run ends
+// settings apply to every run, after the model's own; jobs 0: one run at once, so that their
+// wall times compare.
+struct CompareOptions : StudyOptions {
+  std::vector<std::string> models;  // empty: the case's `compare:` entries, or all
 };
 
 struct CompareOutcome {

@@ -12,7 +12,6 @@
 #include "sluice/io/sweep_table.hpp"
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/sim/runner.hpp"
-#include "sluice/study/child_runs.hpp"
 
 namespace sluice {
 
@@ -36,20 +35,12 @@ SweepOutcome run_sweep(const SweepOptions& o) {
   }
   SweepOutcome outcome{o.out_dir.empty() ? "out/sweep_" + name : o.out_dir, keys, {}};
   const std::string& out_dir = outcome.out_dir;
-  std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error) {
-    throw InputError(out_dir + ": cannot create the output directory: " + error.message());
-  }
-
+  create_study_directory(out_dir);
   const int jobs =
       std::clamp(o.jobs > 0 ? o.jobs : threads_per_run(1), 1, static_cast<int>(runs.size()));
   const int threads = threads_per_run(jobs);
-  if (o.report) {
-    fmt::print("sweep: {} runs of {} ({} at once, {} thread{} each) in {}\n", runs.size(),
-               o.case_path, jobs, threads, threads > 1 ? "s" : "", out_dir);
-    std::fflush(stdout);
-  }
+  report_study_start(o, fmt::format("sweep: {} runs of {}", runs.size(), o.case_path), jobs,
+                     threads, out_dir);
 
   std::vector<io::SweepResult>& results = outcome.results;
   results.resize(runs.size());

@@ -8,21 +8,12 @@
 #include <vector>
 
 #include "sluice/io/sweep_table.hpp"
+#include "sluice/study/child_runs.hpp"
 
 namespace sluice {
 
-class HypreSession;  // linear/hypre_session.hpp
-
-struct SweepOptions {
-  std::string case_path;
-  std::vector<std::string> settings;  // the --set arguments
-  std::string out_dir;                // default: out/sweep_CASE_NAME
-  int jobs = 0;                       // runs at once; 0 = as many as cores, at most the runs
-  double end_time = 0;                // 0 = the case's
-  std::string program;                // the sluice executable, which runs each case
-  HypreSession* hypre = nullptr;      // the process's, for the checks (sim/runner.hpp)
-  bool report = true;                 // a line on stdout as each run ends
-};
+// jobs 0: as many runs at once as cores, at most the runs.
+struct SweepOptions : StudyOptions {};
 
 struct SweepOutcome {
   std::string out_dir;
