@@ -2,6 +2,7 @@
 import csv
 import os
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -276,3 +277,27 @@ def test_no_thread_count_is_openmps_default(small_dam_break, tmp_path):
     expected = int(os.environ.get("OMP_NUM_THREADS", os.cpu_count()))
     assert sluice.Simulation(small_dam_break, out=str(tmp_path)).threads == expected
     assert sluice.Simulation(small_dam_break, out=str(tmp_path), threads=3).threads == 3
+
+
+def test_another_thread_may_not_read_or_step_it_while_it_steps(tmp_path):
+    """The steps run without the GIL: while one thread steps the simulation, another that
+    reads or steps it gets RuntimeError (never a view of particles being moved), and once the
+    run is over it reads it again."""
+    case = sluice.Case.from_yaml(case_path("dam_break_2d"),
+                                 set={"spacing": 0.04, "end_time": 0.1})
+    sim = sluice.Simulation(case, out=str(tmp_path), threads=1)
+    stepper = threading.Thread(target=sim.run)
+    stepper.start()
+    refused = 0
+    while stepper.is_alive():
+        for call in (sim.probes, sim.fields, sim.step):
+            try:
+                call()
+            except RuntimeError:
+                refused += 1
+            except ValueError:  # step() after the run returned, before its thread ended
+                assert sim.time == pytest.approx(0.1, abs=1e-12)
+    stepper.join()
+    assert refused > 0
+    assert sim.time == pytest.approx(0.1, abs=1e-12)
+    assert sim.probes()["front [m]"] > 1.0
