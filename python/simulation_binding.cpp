@@ -78,6 +78,7 @@ class Simulation {
     options.resume = resume;
     options.quiet = !progress;
     options.hypre = &hypre_session();
+    options.keep_probe_record = true;
     const ThreadCount count(threads_);
     run_ = std::make_unique<CaseRun>(device ? on_device(config, *device) : config, options);
   }

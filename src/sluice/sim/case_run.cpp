@@ -191,6 +191,7 @@ CaseRun::CaseRun(const io::CaseConfig& config, const RunOptions& options)
                             dimension_, start);
     }
     o.probes.emplace(config.probes, o.first_rank ? options.out_dir + "/probes.csv" : "", start);
+    if (options.keep_probe_record) o.probes->keep_record();
     if (!pieces.empty()) {
       o.resume_redistributed(pieces, sim);
       pieces = {};

@@ -68,7 +68,8 @@ class CaseRun {
   std::vector<std::string> probe_labels() const;
   std::vector<double> probe_values() const;
   // The probes' rows recorded by this run so far (a resumed run's since its checkpoint), as
-  // probes.csv holds them: the time, then each probe's value.
+  // probes.csv holds them: the time, then each probe's value; none without
+  // RunOptions::keep_probe_record.
   const std::vector<std::vector<double>>& probe_record() const;
 
  private:

@@ -47,7 +47,7 @@ void Probes::record(double time, const FluidObservation& fluid) {
   std::vector<double> row{time};
   row.insert(row.end(), values.begin(), values.end());
   if (csv_) csv_->row(row);
-  recorded_.push_back(std::move(row));
+  if (keep_record_) recorded_.push_back(std::move(row));
 }
 
 }  // namespace sluice

@@ -20,10 +20,12 @@ class Probes {
          io::CsvStart start = io::CsvStart::kNew);
 
   bool empty() const { return probes_.empty(); }
-  // Appends one row for the time, to the file and to recorded().
+  // Appends one row for the time, to the file and, after keep_record(), to recorded().
   void record(double time, const FluidObservation& fluid);
-  // The rows this object recorded (a resumed run's since its checkpoint): the time, then each
-  // probe's value; a few numbers a probe time, kept for a caller that steps the run.
+  // From now on, recorded() keeps every row (for a caller that steps the run and reads them;
+  // a long run's command line keeps none, its memory bounded).
+  void keep_record() { keep_record_ = true; }
+  // The rows kept since keep_record(): the time, then each probe's value.
   const std::vector<std::vector<double>>& recorded() const { return recorded_; }
   // Each probe's column label, its name and unit: "front [m]", "P1 [Pa]".
   std::vector<std::string> labels() const;
@@ -37,6 +39,7 @@ class Probes {
  private:
   std::vector<io::ProbeConfig> probes_;
   std::unique_ptr<io::CsvWriter> csv_;
+  bool keep_record_ = false;
   std::vector<std::vector<double>> recorded_;
 };
 

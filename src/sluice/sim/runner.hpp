@@ -26,6 +26,8 @@ struct RunOptions {
   HypreSession* hypre = nullptr;
   // The run's ranks (mpirun -np N); null: this process alone. Every rank calls run_case.
   const Communicator* ranks = nullptr;
+  // Keep the probes' rows in memory (CaseRun::probe_record), for a caller that steps the run.
+  bool keep_probe_record = false;
 };
 
 struct RunSummary {
