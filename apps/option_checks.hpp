@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "sluice/sim/device_choice.hpp"
+
 namespace sluice {
 
 // A count of at least one: threads, jobs.
@@ -43,7 +45,7 @@ inline CLI::Validator positive_seconds() {
 inline CLI::Validator device_name() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        if (text == "cpu" || text == "gpu" || text == "emulated") return {};
+        if (is_device_name(text)) return {};
         return "expected cpu, gpu or emulated, got '" + text + "'";
       },
       "cpu|gpu|emulated");

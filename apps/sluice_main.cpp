@@ -105,8 +105,8 @@ int main(int argc, char** argv) {
   run->add_option("--set", overrides, "override a case key: key.path=value (repeatable)");
   run->add_option("--stats", stats_path, "write run statistics as JSON to this file");
   const char* device_help =
-      "where the loops run: cpu (default), gpu (CUDA; the wcsph model), emulated (the GPU's "
-      "steps on the host's threads)";
+      "where the loops run (default: the case's model.device, else cpu): cpu, gpu (CUDA; the "
+      "wcsph model), emulated (the GPU's steps on the host's threads)";
   run->add_option("--device", device, device_help)->check(sluice::device_name());
 
   CLI::App* check =
@@ -204,9 +204,10 @@ int main(int argc, char** argv) {
                                                              : sluice::kExitDiverged;
     }
     sluice::exec::set_thread_count(threads);
-    if (!device.empty() && device != "cpu") {
-      sluice::check_device(sluice::io::read_case(case_path, overrides), device, "--device");
-      overrides.push_back(sluice::device_override(device));
+    if (!device.empty()) {
+      const sluice::io::CaseConfig plain = sluice::io::read_case(case_path, overrides);
+      sluice::check_device(plain, device, "--device");
+      if (sluice::sets_model_device(plain, device)) overrides.push_back("model.device=" + device);
     }
     const sluice::io::CaseConfig config = sluice::io::read_case(case_path, overrides);
     if (check->parsed()) {

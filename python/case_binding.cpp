@@ -56,19 +56,18 @@ std::string flow_text(const YAML::Node& node) {
   return out.c_str();
 }
 
-// `set`'s {key path: value} as --set's "key.path=value" strings.
-std::vector<std::string> overrides_of(const py::dict& settings) {
+}  // namespace
+
+std::string yaml_text(const py::handle& value) {
+  return flow_text(yaml_of(value));
+}
+
+std::vector<std::string> set_overrides(const py::dict& settings) {
   std::vector<std::string> overrides;
   for (const auto& [key, value] : settings) {
     overrides.push_back(py::str(key).cast<std::string>() + "=" + yaml_text(value));
   }
   return overrides;
-}
-
-}  // namespace
-
-std::string yaml_text(const py::handle& value) {
-  return flow_text(yaml_of(value));
 }
 
 void bind_case(py::module_& m) {
@@ -105,7 +104,7 @@ Bad input raises sluice.InputError naming the file, line and key.)doc")
       .def_static(
           "from_yaml",
           [](const std::string& path, const py::dict& settings) {
-            return io::read_case(path, overrides_of(settings));
+            return io::read_case(path, set_overrides(settings));
           },
           py::arg("path"), py::arg("set") = py::dict(),
           "Reads the case file at `path`; `set` maps key paths to values, as --set does: "

@@ -45,7 +45,7 @@ namespace {
 // only there leaves the case as it is.
 io::CaseConfig on_device(const io::CaseConfig& config, const std::string& device) {
   check_device(config, device, "device");
-  if (device == "cpu" && !config.model["device"]) return config;
+  if (!sets_model_device(config, device)) return config;
   io::CaseConfig moved = config;
   moved.model = YAML::Clone(config.model);  // a YAML node is shared by its copies
   moved.model["device"] = device;

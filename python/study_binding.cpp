@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -16,6 +17,7 @@
 
 #include "case_binding.hpp"
 #include "simulation_binding.hpp"
+#include "sluice/core/errors.hpp"
 #include "sluice/study/compare.hpp"
 #include "sluice/study/sweep.hpp"
 
@@ -42,6 +44,17 @@ void add_measurements(py::dict& row, const io::Measurements& measurements) {
   for (const auto& [name, value] : measurements) row[py::str(name)] = value;
 }
 
+// One value of an axis as YAML text; a string with a comma, a bracket or a quote in double
+// quotes, so that the axis's list splits between its values alone.
+std::string axis_value_text(const py::handle& value) {
+  if (!py::isinstance<py::str>(value)) return yaml_text(value);
+  const std::string text = value.cast<std::string>();
+  if (text.find_first_of(",[]{}\"'") == std::string::npos) return yaml_text(value);
+  YAML::Emitter quoted;
+  quoted << YAML::DoubleQuoted << text;
+  return quoted.c_str();
+}
+
 // `set`'s {key: value or [values]} as the command line's --set KEY=V1,V2: a list or tuple is an
 // axis of the sweep (a list value is given inside one: [[0.5, 1], [0.6, 1]]), anything else is
 // set in every run.
@@ -51,11 +64,12 @@ std::vector<std::string> sweep_settings(const py::dict& settings) {
     std::string values;
     if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
       if (py::len(value) == 0) {
-        throw py::value_error("sweep: '" + py::str(key).cast<std::string>() + "' has no values");
+        const std::string name = py::str(key).cast<std::string>();
+        throw InputError("--set " + name, 0, name, "an empty list of values");
       }
       for (const auto& item : value) {
         if (!values.empty()) values += ',';
-        values += yaml_text(item);
+        values += axis_value_text(item);
       }
     } else {
       values = yaml_text(value);
@@ -65,19 +79,13 @@ std::vector<std::string> sweep_settings(const py::dict& settings) {
   return out;
 }
 
-std::vector<std::string> every_run_settings(const py::dict& settings) {
-  std::vector<std::string> out;
-  for (const auto& [key, value] : settings) {
-    out.push_back(fmt::format("{}={}", py::str(key).cast<std::string>(), yaml_text(value)));
-  }
-  return out;
-}
-
 // The options both studies take from Python, their runs started by this module's sluice.
 StudyOptions study_options(const std::filesystem::path& case_path,
                            std::vector<std::string> settings,
                            const std::optional<std::filesystem::path>& out, int jobs,
                            std::optional<double> end, bool progress) {
+  if (jobs < 0) throw py::value_error("jobs must be 0 (the default) or more");
+  if (end && !(*end > 0)) throw py::value_error("end must be above 0 s");
   StudyOptions o;
   o.case_path = case_path;
   o.settings = std::move(settings);
@@ -90,11 +98,28 @@ StudyOptions study_options(const std::filesystem::path& case_path,
   return o;
 }
 
-// The study's runs without the GIL: other Python threads go on meanwhile.
+// A study run with the GIL until its checks have passed (they may solve with hypre, which a
+// simulation stepping in another Python thread shares), then without it, other threads going
+// on, until it ends; Ctrl-C stops its runs (KeyboardInterrupt).
 template <class Outcome, class Options>
-Outcome run_without_the_gil(Outcome (*study)(const Options&), const Options& options) {
-  const py::gil_scoped_release free_python;
-  return study(options);
+Outcome run_study(Outcome (*study)(const Options&), Options options) {
+  struct ReleasedAfterChecks {
+    PyThreadState* saved = nullptr;
+    ~ReleasedAfterChecks() {
+      if (saved != nullptr) PyEval_RestoreThread(saved);
+    }
+  } gil;
+  options.checked = [&gil] { gil.saved = PyEval_SaveThread(); };
+  options.stop_requested = [] {
+    const py::gil_scoped_acquire python;
+    return PyErr_CheckSignals() != 0;  // leaves the KeyboardInterrupt set
+  };
+  try {
+    return study(options);
+  } catch (const StudyStopped&) {
+    if (gil.saved != nullptr) PyEval_RestoreThread(std::exchange(gil.saved, nullptr));
+    throw py::error_already_set();
+  }
 }
 
 py::list sweep(const std::filesystem::path& case_path, const py::dict& settings,
@@ -103,7 +128,7 @@ py::list sweep(const std::filesystem::path& case_path, const py::dict& settings,
   SweepOptions o;
   static_cast<StudyOptions&>(o) =
       study_options(case_path, sweep_settings(settings), out, jobs, end, progress);
-  const SweepOutcome outcome = run_without_the_gil(&run_sweep, o);
+  const SweepOutcome outcome = run_study(&run_sweep, o);
   py::list rows;
   for (std::size_t k = 0; k < outcome.results.size(); ++k) {
     const io::SweepResult& r = outcome.results[k];
@@ -125,9 +150,9 @@ py::list compare(const std::filesystem::path& case_path, const std::vector<std::
                  int jobs, std::optional<double> end, bool progress) {
   CompareOptions o;
   static_cast<StudyOptions&>(o) =
-      study_options(case_path, every_run_settings(settings), out, jobs, end, progress);
+      study_options(case_path, set_overrides(settings), out, jobs, end, progress);
   o.models = models;
-  const CompareOutcome outcome = run_without_the_gil(&run_compare, o);
+  const CompareOutcome outcome = run_study(&run_compare, o);
   py::list rows;
   for (const io::CompareResult& r : outcome.results) {
     py::dict row;
@@ -158,9 +183,10 @@ A list or tuple in `set` is an axis (a list-valued key's values go inside one: [
 [0.6, 1]]); any other value applies to every run. A row holds 'run' (1, 2, ...), each swept key
 (a number where the value is one), 'status' ('done', 'diverged', 'failed (exit N)'), 'out' (the
 run's folder) and the run's measurements by name (its counters, each probe at the end, 'steps',
-'wall [s]'). Every combination is checked before any runs (bad input: sluice.InputError);
+'wall_seconds'). Every combination is checked before any runs (bad input: sluice.InputError);
 a run that diverges or fails is a row with its status. `jobs` runs at once (0: one per core),
-`end` overrides every run's end time, `progress` prints a line as each run ends. Each run is a
+`end` overrides every run's end time, `progress` prints the command line's lines (the start,
+each run's end, the table). Ctrl-C stops the runs (KeyboardInterrupt). Each run is a
 child `sluice run` (the executable built with this module, or $SLUICE_EXECUTABLE).)doc");
   m.def("compare", &compare, py::arg("case"), py::arg("models") = std::vector<std::string>{},
         py::arg("set") = py::dict(), py::arg("out") = py::none(), py::arg("jobs") = 1,

@@ -2,6 +2,8 @@
 runs that diverge; bad input before anything runs. And Simulation(device=...)."""
 import csv
 import os
+import signal
+import threading
 
 import numpy as np
 import pytest
@@ -50,8 +52,13 @@ def test_a_bad_sweep_value_is_refused_before_anything_runs(tmp_path):
         sluice.sweep(case_path("dam_break_2d"), set={"spacing": [0.05, -1]}, out=out)
     assert error.value.key == "spacing" and "greater than zero" in str(error.value)
     assert not out.exists()
-    with pytest.raises(ValueError):
+    with pytest.raises(sluice.InputError) as error:
         sluice.sweep(case_path("dam_break_2d"), set={"spacing": []}, out=out)
+    assert error.value.key == "spacing" and "an empty list of values" in str(error.value)
+    with pytest.raises(ValueError):
+        sluice.sweep(case_path("dam_break_2d"), set={"spacing": 0.1}, out=out, jobs=-1)
+    with pytest.raises(ValueError):
+        sluice.sweep(case_path("dam_break_2d"), set={"spacing": 0.1}, out=out, end=0)
     with pytest.raises(sluice.InputError):
         sluice.sweep(os.path.join(ROOT, "cases", "no_such_case.yaml"), set={"spacing": 0.1})
 
@@ -99,3 +106,36 @@ def test_device_choice(small_dam_break, tmp_path):
         assert sim.steps > 0
     # (identical here; 1e-6 m, 2e-5 of the spacing, leaves room for another processor's SIMD)
     np.testing.assert_allclose(positions["emulated"], positions["cpu"], atol=1e-6)
+
+
+def test_a_quoted_value_keeps_its_commas(tmp_path):
+    rows = sluice.sweep(case_path("dam_break_2d"),
+                        set={"name": ["a, b", "c"], "spacing": 0.1, "end_time": 0.01},
+                        out=tmp_path / "names", progress=False)
+    assert [(r["name"], r["status"]) for r in rows] == [('"a, b"', "done"), ("c", "done")]
+
+
+def sluice_processes_writing_into(folder):
+    """The processes whose command line names `folder`."""
+    found = []
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as cmdline:
+                if str(folder).encode() in cmdline.read():
+                    found.append(int(pid))
+        except OSError:
+            pass  # ended meanwhile
+    return found
+
+
+def test_ctrl_c_stops_a_sweep_and_its_runs(tmp_path):
+    out = tmp_path / "stopped"
+    # Runs of minutes each; Ctrl-C (SIGINT to this process) a second after they start.
+    interrupt = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
+    interrupt.start()
+    with pytest.raises(KeyboardInterrupt):
+        sluice.sweep(case_path("dam_break_2d"), set={"spacing": [0.01, 0.012]}, out=out, jobs=2,
+                     progress=False)
+    interrupt.join()
+    assert os.path.isdir(out / "run_001")  # they had started
+    assert sluice_processes_writing_into(out) == []  # and none is left

@@ -53,7 +53,14 @@ SweepSetting parse_sweep_setting(const std::string& assignment) {
     setting.values.push_back(v);
     value.clear();
   };
+  char quote = 0;  // within a quoted YAML string: '"' or '\'', whose commas are its own
   for (const char c : text) {
+    if (quote != 0) {
+      if (c == quote) quote = 0;
+      value += c;
+      continue;
+    }
+    if (c == '"' || c == '\'') quote = c;
     if (c == '[' || c == '{') ++depth;
     if (c == ']' || c == '}') --depth;
     if (c == ',' && depth == 0) {

@@ -20,8 +20,8 @@ struct SweepRun {
   std::vector<std::string> values;     // the value of each axis (settings with 2+ values)
 };
 
-// Splits "KEY=V1,V2,..." at the commas outside brackets and braces, so that
-// `fluid.blocks.0.max=[0.5, 1],[0.6, 1]` gives two values. Throws InputError naming the
+// Splits "KEY=V1,V2,..." at the commas outside brackets, braces and quotes, so that
+// `fluid.blocks.0.max=[0.5, 1],[0.6, 1]` gives two values and `name="a, b",c` two. Throws InputError naming the
 // --set on a missing key, an empty key between '+', or an empty value.
 SweepSetting parse_sweep_setting(const std::string& assignment);
 

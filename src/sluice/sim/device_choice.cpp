@@ -8,9 +8,13 @@
 
 namespace sluice {
 
+bool is_device_name(const std::string& device) {
+  return device == "cpu" || device == "gpu" || device == "emulated";
+}
+
 void check_device(const io::CaseConfig& config, const std::string& device,
                   const std::string& option) {
-  if (device != "cpu" && device != "gpu" && device != "emulated") {
+  if (!is_device_name(device)) {
     throw InputError(option + ": expected cpu, gpu or emulated, got '" + device + "'");
   }
   if (device == "cpu") return;
@@ -24,8 +28,8 @@ void check_device(const io::CaseConfig& config, const std::string& device,
                    (models.size() == 1 ? "" : "s") + " only, not '" + config.model_name + "'");
 }
 
-std::string device_override(const std::string& device) {
-  return device == "cpu" ? "" : "model.device=" + device;
+bool sets_model_device(const io::CaseConfig& config, const std::string& device) {
+  return device != "cpu" || static_cast<bool>(config.model["device"]);
 }
 
 }  // namespace sluice

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -100,9 +101,19 @@ ChildRun sluice_run(const std::string& program, const std::string& case_path,
 
 std::vector<ChildOutcome> run_children(
     const std::vector<ChildRun>& runs, int jobs,
-    const std::function<void(std::size_t, const ChildOutcome&)>& finished) {
+    const std::function<void(std::size_t, const ChildOutcome&)>& finished,
+    const std::function<bool()>& stop_requested) {
   std::vector<ChildOutcome> outcomes(runs.size());
   std::map<pid_t, RunningJob> running;
+  // A run that cannot start, a row that cannot be read or a stop: the runs still going are
+  // stopped and waited for, none left behind writing into the study's folder.
+  struct StopTheRest {
+    std::map<pid_t, RunningJob>& running;
+    ~StopTheRest() {
+      for (const auto& job : running) kill(job.first, SIGTERM);
+      for (const auto& job : running) waitpid(job.first, nullptr, 0);
+    }
+  } stop_the_rest{running};
   std::size_t next = 0, done = 0;
   while (done < runs.size()) {
     while (next < runs.size() && static_cast<int>(running.size()) < jobs) {
@@ -110,20 +121,33 @@ std::vector<ChildOutcome> run_children(
       running[pid] = RunningJob{next, std::chrono::steady_clock::now()};
       ++next;
     }
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    if (pid < 0 && errno != EINTR) {
-      throw std::runtime_error(std::string("waiting for the runs: ") + strerror(errno));
+    // Each of its own children in turn, without blocking: waitpid(-1) would also take the exit
+    // of a child the caller started itself (a Python script's subprocess).
+    bool any_ended = false;
+    for (auto job = running.begin(); job != running.end();) {
+      int status = 0;
+      const pid_t ended = waitpid(job->first, &status, WNOHANG);
+      if (ended < 0 && errno != EINTR) {
+        throw std::runtime_error(std::string("waiting for the runs: ") + strerror(errno));
+      }
+      if (ended != job->first) {
+        ++job;
+        continue;
+      }
+      const std::size_t k = job->second.run;
+      outcomes[k].seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - job->second.start)
+              .count();
+      outcomes[k].status = status_of(status);
+      job = running.erase(job);
+      ++done;
+      any_ended = true;
+      finished(k, outcomes[k]);
     }
-    const auto job = running.find(pid);
-    if (job == running.end()) continue;  // interrupted, or not one of ours
-    const std::size_t k = job->second.run;
-    outcomes[k].seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - job->second.start).count();
-    outcomes[k].status = status_of(status);
-    running.erase(job);
-    ++done;
-    finished(k, outcomes[k]);
+    if (stop_requested && stop_requested()) throw StudyStopped();
+    if (!any_ended && done < runs.size()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
   }
   return outcomes;
 }

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,12 @@ struct StudyOptions {
   double end_time = 0;                // 0 = the case's
   std::string program;                // the sluice executable, which runs each case
   HypreSession* hypre = nullptr;      // the process's, for the checks (sim/runner.hpp)
-  bool report = true;                 // a line on stdout as the study starts and each run ends
+  bool report = true;  // lines on stdout: the study's start, each run's end, the table, the plots
+  // Called once every run's case has been checked (the checks may solve with hypre), before
+  // anything runs or is written: where Python lets its other threads go on.
+  std::function<void()> checked;
+  // Asked every 20 ms while the runs go on: true stops them (StudyStopped). Python's Ctrl-C.
+  std::function<bool()> stop_requested;
 };
 
 // Creates the study's output directory; InputError naming it when it cannot.
@@ -46,11 +52,19 @@ ChildRun sluice_run(const std::string& program, const std::string& case_path,
                     const std::string& dir, int threads, double end_time,
                     const std::vector<std::string>& overrides);
 
-// Runs `runs`, `jobs` at once, and calls `finished(k, outcome)` as run k ends. Throws
-// std::runtime_error when a run cannot be started.
+// Thrown by run_children when its caller asks it to stop (Ctrl-C in a Python script).
+struct StudyStopped : std::runtime_error {
+  StudyStopped() : std::runtime_error("the study was stopped") {}
+};
+
+// Runs `runs`, `jobs` at once, and calls `finished(k, outcome)` as run k ends, asking
+// `stop_requested` (where given) every 20 ms whether to stop: then StudyStopped. Throws
+// std::runtime_error when a run cannot be started. Whatever it throws, the runs still going
+// are stopped (SIGTERM) and waited for first.
 std::vector<ChildOutcome> run_children(
     const std::vector<ChildRun>& runs, int jobs,
-    const std::function<void(std::size_t, const ChildOutcome&)>& finished);
+    const std::function<void(std::size_t, const ChildOutcome&)>& finished,
+    const std::function<bool()>& stop_requested = {});
 
 // The threads each of `jobs` runs at once gets: the cores shared out, at least one.
 int threads_per_run(int jobs);

@@ -102,6 +102,7 @@ CompareOutcome run_compare(const CompareOptions& o) {
     runs.push_back(model_run(model, base, o.settings));
     check_case(io::read_case(o.case_path, runs.back().overrides), o.hypre);
   }
+  if (o.checked) o.checked();
   CompareOutcome outcome{o.out_dir.empty() ? "out/compare_" + base.name : o.out_dir, {}};
   const std::string& out_dir = outcome.out_dir;
   create_study_directory(out_dir);
@@ -117,18 +118,21 @@ CompareOutcome run_compare(const CompareOptions& o) {
     children.push_back(sluice_run(o.program, o.case_path, out_dir + "/" + run.model, threads,
                                   o.end_time, run.overrides));
   std::size_t finished = 0;
-  run_children(children, jobs, [&](std::size_t k, const ChildOutcome& child) {
-    io::CompareResult& r = results[k];
-    r.model = runs[k].model;
-    r.settings = runs[k].settings;
-    r.status = child.status;
-    const std::string dir = out_dir + "/" + r.model;
-    if (r.status == "done") read_compare_figures(dir, base.probes, base.dimension, r);
-    if (!o.report) return;
-    fmt::print("[{}/{}] {}: {} in {:.1f} s{}\n", ++finished, runs.size(), r.model, r.status,
-               child.seconds, r.status == "done" ? "" : " (see " + dir + ".log)");
-    std::fflush(stdout);
-  });
+  run_children(
+      children, jobs,
+      [&](std::size_t k, const ChildOutcome& child) {
+        io::CompareResult& r = results[k];
+        r.model = runs[k].model;
+        r.settings = runs[k].settings;
+        r.status = child.status;
+        const std::string dir = out_dir + "/" + r.model;
+        if (r.status == "done") read_compare_figures(dir, base.probes, base.dimension, r);
+        if (!o.report) return;
+        fmt::print("[{}/{}] {}: {} in {:.1f} s{}\n", ++finished, runs.size(), r.model, r.status,
+                   child.seconds, r.status == "done" ? "" : " (see " + dir + ".log)");
+        std::fflush(stdout);
+      },
+      o.stop_requested);
   io::write_file_atomically(out_dir + "/compare.csv", io::compare_table_csv(results));
   io::write_file_atomically(out_dir + "/compare.md", io::compare_table_markdown(results));
   if (o.report) {

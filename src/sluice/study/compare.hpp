@@ -20,7 +20,7 @@ struct CompareOptions : StudyOptions {
 
 struct CompareOutcome {
   std::string out_dir;
-  std::vector<io::CompareResult> results;  // one per model, in the order they ran
+  std::vector<io::CompareResult> results;  // one per model, in the order of the models
   bool all_done() const;
 };
 

@@ -33,6 +33,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     check_case(config, o.hypre);
     name = config.name;
   }
+  if (o.checked) o.checked();
   SweepOutcome outcome{o.out_dir.empty() ? "out/sweep_" + name : o.out_dir, keys, {}};
   const std::string& out_dir = outcome.out_dir;
   create_study_directory(out_dir);
@@ -50,19 +51,24 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     children.push_back(
         sluice_run(o.program, o.case_path, dir_of(k), threads, o.end_time, runs[k].overrides));
   std::size_t finished = 0;
-  run_children(children, jobs, [&](std::size_t k, const ChildOutcome& child) {
-    io::SweepResult& r = results[k];
-    r.values = runs[k].values;
-    r.status = child.status;
-    if (r.status == "done") r.measurements = io::read_run_measurements(dir_of(k) + "/stats.json");
-    if (!o.report) return;
-    std::string label;
-    for (std::size_t a = 0; a < keys.size(); ++a)
-      label += fmt::format("{}{}={}", a ? " " : "", keys[a], r.values[a]);
-    fmt::print("[{}/{}] run_{:03d} {}: {} in {:.1f} s{}\n", ++finished, runs.size(), k + 1, label,
-               r.status, child.seconds, r.status == "done" ? "" : " (see " + dir_of(k) + ".log)");
-    std::fflush(stdout);
-  });
+  run_children(
+      children, jobs,
+      [&](std::size_t k, const ChildOutcome& child) {
+        io::SweepResult& r = results[k];
+        r.values = runs[k].values;
+        r.status = child.status;
+        if (r.status == "done")
+          r.measurements = io::read_run_measurements(dir_of(k) + "/stats.json");
+        if (!o.report) return;
+        std::string label;
+        for (std::size_t a = 0; a < keys.size(); ++a)
+          label += fmt::format("{}{}={}", a ? " " : "", keys[a], r.values[a]);
+        fmt::print("[{}/{}] run_{:03d} {}: {} in {:.1f} s{}\n", ++finished, runs.size(), k + 1,
+                   label, r.status, child.seconds,
+                   r.status == "done" ? "" : " (see " + dir_of(k) + ".log)");
+        std::fflush(stdout);
+      },
+      o.stop_requested);
   io::write_file_atomically(out_dir + "/summary.csv", io::sweep_table_csv(keys, results));
   io::write_file_atomically(out_dir + "/summary.md", io::sweep_table_markdown(keys, results));
   if (o.report) {

@@ -11,13 +11,16 @@
 namespace sluice::io {
 namespace {
 
-TEST(SweepPlan, SplitsValuesAtCommasOutsideBrackets) {
+TEST(SweepPlan, SplitsValuesAtCommasOutsideBracketsAndQuotes) {
   const SweepSetting ks = parse_sweep_setting("model.Ks=5e3, 5e4,1e5");
   EXPECT_EQ(ks.key, "model.Ks");
   EXPECT_EQ(ks.values, (std::vector<std::string>{"5e3", "5e4", "1e5"}));
   const SweepSetting box = parse_sweep_setting("fluid.blocks.0.max=[0.5, 1],[0.6, 1]");
   EXPECT_EQ(box.values, (std::vector<std::string>{"[0.5, 1]", "[0.6, 1]"}));
   EXPECT_EQ(parse_sweep_setting("spacing=0.05").values.size(), 1u);
+  // A quoted YAML string keeps its commas (and brackets).
+  const SweepSetting names = parse_sweep_setting(R"(name="a, b",'c,[d',e)");
+  EXPECT_EQ(names.values, (std::vector<std::string>{R"("a, b")", "'c,[d'", "e"}));
 }
 
 TEST(SweepPlan, RejectsAMissingKeyOrAnEmptyValue) {
