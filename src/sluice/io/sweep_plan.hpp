@@ -21,8 +21,8 @@ struct SweepRun {
 };
 
 // Splits "KEY=V1,V2,..." at the commas outside brackets, braces and quotes, so that
-// `fluid.blocks.0.max=[0.5, 1],[0.6, 1]` gives two values and `name="a, b",c` two. Throws InputError naming the
-// --set on a missing key, an empty key between '+', or an empty value.
+// `fluid.blocks.0.max=[0.5, 1],[0.6, 1]` gives two values and `name="a, b",c` two. Throws
+// InputError naming the --set on a missing key, an empty key between '+', or an empty value.
 SweepSetting parse_sweep_setting(const std::string& assignment);
 
 // Every combination, the last axis varying fastest.
