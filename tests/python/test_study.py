@@ -4,6 +4,7 @@ import csv
 import os
 import signal
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -130,12 +131,20 @@ def sluice_processes_writing_into(folder):
 
 def test_ctrl_c_stops_a_sweep_and_its_runs(tmp_path):
     out = tmp_path / "stopped"
-    # Runs of minutes each; Ctrl-C (SIGINT to this process) a second after they start.
-    interrupt = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
+
+    def press_ctrl_c_once_they_run():
+        """SIGINT to this process half a second after the runs (minutes each) have written
+        their first frames."""
+        while not (os.path.exists(out / "run_001" / "frames") and
+                   os.path.exists(out / "run_002" / "frames")):
+            time.sleep(0.05)
+        time.sleep(0.5)
+        os.kill(os.getpid(), signal.SIGINT)
+
+    interrupt = threading.Thread(target=press_ctrl_c_once_they_run, daemon=True)
     interrupt.start()
     with pytest.raises(KeyboardInterrupt):
         sluice.sweep(case_path("dam_break_2d"), set={"spacing": [0.01, 0.012]}, out=out, jobs=2,
                      progress=False)
     interrupt.join()
-    assert os.path.isdir(out / "run_001")  # they had started
-    assert sluice_processes_writing_into(out) == []  # and none is left
+    assert sluice_processes_writing_into(out) == []  # none of the runs is left
