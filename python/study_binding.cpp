@@ -152,6 +152,7 @@ py::list compare(const std::filesystem::path& case_path, const std::vector<std::
   static_cast<StudyOptions&>(o) =
       study_options(case_path, set_overrides(settings), out, jobs, end, progress);
   o.models = models;
+  o.models_option = "models";
   const CompareOutcome outcome = run_study(&run_compare, o);
   py::list rows;
   for (const io::CompareResult& r : outcome.results) {

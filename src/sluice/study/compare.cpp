@@ -34,7 +34,7 @@ std::vector<std::string> models_to_run(const CompareOptions& o, const io::CaseCo
   if (!o.models.empty()) {
     for (const std::string& name : o.models) {
       if (std::find(known.begin(), known.end(), name) == known.end()) {
-        throw InputError("--models: " + io::unknown_choice("fluid model", name, known));
+        throw InputError(o.models_option + ": " + io::unknown_choice("fluid model", name, known));
       }
       if (std::find(models.begin(), models.end(), name) == models.end()) models.push_back(name);
     }

@@ -15,7 +15,8 @@ namespace sluice {
 // settings apply to every run, after the model's own; jobs 0: one run at once, so that their
 // wall times compare.
 struct CompareOptions : StudyOptions {
-  std::vector<std::string> models;  // empty: the case's `compare:` entries, or all
+  std::vector<std::string> models;         // empty: the case's `compare:` entries, or all
+  std::string models_option = "--models";  // as an unknown model's message names them
 };
 
 struct CompareOutcome {
