@@ -76,6 +76,15 @@ void report_study_start(const StudyOptions& options, const std::string& head, in
   std::fflush(stdout);
 }
 
+void report_run_end(const StudyOptions& options, std::size_t finished, std::size_t total,
+                    const std::string& label, const std::string& status, double seconds,
+                    const std::string& run_dir) {
+  if (!options.report) return;
+  fmt::print("[{}/{}] {}: {} in {:.1f} s{}\n", finished, total, label, status, seconds,
+             status == "done" ? "" : " (see " + run_dir + ".log)");
+  std::fflush(stdout);
+}
+
 ChildRun sluice_run(const std::string& program, const std::string& case_path,
                     const std::string& dir, int threads, double end_time,
                     const std::vector<std::string>& overrides) {

@@ -36,6 +36,12 @@ void create_study_directory(const std::string& dir);
 void report_study_start(const StudyOptions& options, const std::string& head, int jobs, int threads,
                         const std::string& out_dir);
 
+// With options.report, "[N/TOTAL] LABEL: STATUS in S s" on stdout, naming the run's log where
+// it did not finish.
+void report_run_end(const StudyOptions& options, std::size_t finished, std::size_t total,
+                    const std::string& label, const std::string& status, double seconds,
+                    const std::string& run_dir);
+
 struct ChildRun {
   std::vector<std::string> args;  // args[0] is the program
   std::string log;                // its stdout and stderr go here

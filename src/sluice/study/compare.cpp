@@ -127,10 +127,7 @@ CompareOutcome run_compare(const CompareOptions& o) {
         r.status = child.status;
         const std::string dir = out_dir + "/" + r.model;
         if (r.status == "done") read_compare_figures(dir, base.probes, base.dimension, r);
-        if (!o.report) return;
-        fmt::print("[{}/{}] {}: {} in {:.1f} s{}\n", ++finished, runs.size(), r.model, r.status,
-                   child.seconds, r.status == "done" ? "" : " (see " + dir + ".log)");
-        std::fflush(stdout);
+        report_run_end(o, ++finished, runs.size(), r.model, r.status, child.seconds, dir);
       },
       o.stop_requested);
   io::write_file_atomically(out_dir + "/compare.csv", io::compare_table_csv(results));

@@ -59,14 +59,10 @@ SweepOutcome run_sweep(const SweepOptions& o) {
         r.status = child.status;
         if (r.status == "done")
           r.measurements = io::read_run_measurements(dir_of(k) + "/stats.json");
-        if (!o.report) return;
-        std::string label;
+        std::string label = fmt::format("run_{:03d}", k + 1);
         for (std::size_t a = 0; a < keys.size(); ++a)
-          label += fmt::format("{}{}={}", a ? " " : "", keys[a], r.values[a]);
-        fmt::print("[{}/{}] run_{:03d} {}: {} in {:.1f} s{}\n", ++finished, runs.size(), k + 1,
-                   label, r.status, child.seconds,
-                   r.status == "done" ? "" : " (see " + dir_of(k) + ".log)");
-        std::fflush(stdout);
+          label += fmt::format(" {}={}", keys[a], r.values[a]);
+        report_run_end(o, ++finished, runs.size(), label, r.status, child.seconds, dir_of(k));
       },
       o.stop_requested);
   io::write_file_atomically(out_dir + "/summary.csv", io::sweep_table_csv(keys, results));
