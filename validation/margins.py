@@ -9,7 +9,9 @@ another processor) and writes
   (the smallest margin relative to the bar);
 - the margins table: every asserted figure in both builds, the spread between them, the margin to
   its bar, and the margin in units of the spread, tightest first;
-- the limits table: the figures reported against a bar the model does not meet.
+- the limits table: the figures reported against a bar the model does not meet;
+- each section's table of its own checks, and the grid model's operator checks, which are unit
+  tests (the release build's unit_reports/; the baseline build runs no unit tests).
 
 Rerun after `scripts/test_all.sh` (or `ctest --preset release -L physics` and
 `ctest --preset baseline`), and after the slowest checks, which CI runs in the release build
@@ -242,6 +244,11 @@ SECTIONS = [
     ("constraint-checks", r"^ConstraintFluid\.|^CaseFloatingBox\.DraftByArchimedesWithConstraintFluid$"),
 ]
 
+# Tables of unit tests' figures (the release build's alone): name and tests, as above.
+UNIT_SECTIONS = [
+    ("mac-operators", r"^Mac(Advection|Extension|Projection|LevelSet|SurfaceMesh)\."),
+]
+
 
 def section_table(reports, pattern):
     """Every figure of the tests matching pattern, as both builds measured it, in test order."""
@@ -257,12 +264,25 @@ def section_table(reports, pattern):
     return "\n".join(out) + "\n"
 
 
+def unit_section_table(reports, pattern):
+    """Every figure of the unit tests matching pattern, as the release build measured it."""
+    out = ["| figure | bar | measured | test |", "|---|---|---|---|"]
+    for test in sorted(t for t in reports if re.search(pattern, t)):
+        for name, figure in reports[test][2].items():
+            out.append(f"| {name} | {figure.bar_text()} | {figure.text(figure.measured)} | "
+                       f"`{test}` |")
+    return "\n".join(out) + "\n"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     for build in BUILDS:
         parser.add_argument(f"--{build}", default=os.path.join(ROOT, "build", build, "tests",
                                                                "reports"),
                             help=f"the {build} build's physics test reports")
+    parser.add_argument("--unit", default=os.path.join(ROOT, "build", "release", "tests",
+                                                       "unit_reports"),
+                        help="the release build's unit test reports")
     args = parser.parse_args()
     reports = {}
     for build in BUILDS:
@@ -280,6 +300,14 @@ def main():
     write_table("validation.md", "limits", note + "\n\n" + margins_table(reports, False))
     for name, pattern in SECTIONS:
         write_table("validation.md", name, note + "\n\n" + section_table(reports, pattern))
+    unit = read_reports(args.unit)
+    if not unit:
+        sys.exit(f"margins.py: no reports in {args.unit}: run the unit tests "
+                 "(ctest --preset release -LE physics)")
+    unit_dates = sorted({d for (_, d, _) in unit.values() if d})
+    for name, pattern in UNIT_SECTIONS:
+        write_table("validation.md", name, f"Tests run {unit_dates[-1]}, the release build.\n\n"
+                    + unit_section_table(unit, pattern))
 
 
 if __name__ == "__main__":

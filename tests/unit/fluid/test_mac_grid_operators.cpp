@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
+#include "physics/reported_figure.hpp"
 #include "sluice/fluid/mac/advection.hpp"
 #include "sluice/fluid/mac/mac_grid.hpp"
 #include "sluice/fluid/mac/pressure_projection.hpp"
@@ -13,6 +13,9 @@
 
 namespace sluice {
 namespace {
+
+using testing::Bound;
+using testing::expect_figure;
 
 MacGrid<2> unit_square(int n) {
   MacGrid<2> grid;
@@ -95,11 +98,13 @@ TEST(MacAdvection, MacCormackBeatsSemiLagrangianWithoutNewExtrema) {
     largest = std::max(largest, mc[k]);
     smallest = std::min(smallest, mc[k]);
   }
-  std::printf("bump after %d steps: largest error semi-Lagrangian %.4f, MacCormack %.4f\n", steps,
-              error_sl, error_mc);
-  EXPECT_LT(error_mc, error_sl / 3);
-  EXPECT_LE(largest, 1.0);
-  EXPECT_GE(smallest, 0.0);
+  expect_figure(
+      {"MacCormack's largest error over semi-Lagrangian's, a bump carried 25 steps", "", 3},
+      error_mc / error_sl, Bound::below, 1.0 / 3);
+  expect_figure({"MacCormack's largest value (the bump's peak 1)", "", 4}, largest, Bound::below,
+                1.0);
+  expect_figure({"MacCormack's smallest value (the bump's floor 0)", "", 4}, smallest, Bound::above,
+                0.0);
 }
 
 // A flat surface at z = 0.5 with water below; the water's u varies with x alone. Extension
@@ -135,7 +140,8 @@ TEST(MacExtension, CarriesValuesAlongTheNormal) {
       worst = std::max(worst, std::abs(u[a][f] - (a == 0 ? 1 + 2 * x[0] : -x[0])));
     }
   }
-  EXPECT_LT(worst, 1e-12);
+  expect_figure({"extension of a field varying along the surface, largest error", "m/s", -1}, worst,
+                Bound::below, 1e-12);
 }
 
 // The pressure of one projection (dt = 1, density 1, the velocity before it 0) on water
@@ -187,12 +193,10 @@ double annulus_pressure_error(int n) {
 TEST(MacProjection, CutCellPoissonConvergesAtSecondOrder) {
   const double coarse = annulus_pressure_error(32), medium = annulus_pressure_error(64),
                fine = annulus_pressure_error(128);
-  const double order = std::log2(medium / fine);
-  std::printf(
-      "annulus pressure, largest error: %.3g (32), %.3g (64), %.3g (128); order %.2f, "
-      "%.2f\n",
-      coarse, medium, fine, std::log2(coarse / medium), order);
-  EXPECT_GT(order, 1.7);
+  expect_figure({"cut-cell Poisson on an annulus, order from 32 to 64 cells", "", 2},
+                std::log2(coarse / medium), Bound::above, 1.7);
+  expect_figure({"cut-cell Poisson on an annulus, order from 64 to 128 cells", "", 2},
+                std::log2(medium / fine), Bound::above, 1.7);
 }
 
 // After a projection, every water cell's weighted divergence (open part of each face at the
@@ -242,7 +246,8 @@ TEST(MacProjection, LeavesNoDivergenceBesideAMovingSolid) {
     }
     if (open) worst = std::max(worst, std::abs(divergence));
   }
-  EXPECT_LT(worst, 1e-7);
+  expect_figure({"divergence left beside a moving disc, largest", "m/s", -1}, worst, Bound::below,
+                1e-7);
 }
 
 }  // namespace

@@ -3,15 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
+#include "physics/reported_figure.hpp"
 #include "sluice/fluid/mac/free_surface.hpp"
 #include "sluice/fluid/mac/level_set.hpp"
 #include "sluice/fluid/mac/surface_mesh.hpp"
 
 namespace sluice {
 namespace {
+
+using testing::Bound;
+using testing::expect_figure;
 
 template <int D>
 MacGrid<D> cube(int n, double size) {
@@ -46,12 +49,11 @@ TEST(MacLevelSet, ReinitialisationRestoresTheDistance) {
     if (std::abs(exact[k]) < 3 * grid.h) worst = std::max(worst, std::abs(phi[k] - exact[k]));
     if (std::abs(exact[k]) < grid.h) near = std::max(near, std::abs(phi[k] - exact[k]));
   }
-  std::printf(
-      "reinitialised circle: largest error %.3f cells beside the surface, %.3f in the "
-      "band\n",
-      near / grid.h, worst / grid.h);
-  EXPECT_LT(near, 0.05 * grid.h);  // the surface stays where it was
-  EXPECT_LT(worst, 0.1 * grid.h);
+  // The surface stays where it was.
+  expect_figure({"reinitialised circle, largest error beside the surface [cells]", "", 3},
+                near / grid.h, Bound::below, 0.05);
+  expect_figure({"reinitialised circle, largest error in the band of 3 cells [cells]", "", 3},
+                worst / grid.h, Bound::below, 0.1);
 }
 
 // Zalesak's disk (Zalesak, JCP 31, 1979; the set-up of Enright et al. 2002, section 5.1): a
@@ -88,19 +90,18 @@ double zalesak_area_error(int particles_per_cell, int every) {
   const double start = area(surface.phi());
   const int steps = 628;
   for (int s = 0; s < steps; ++s) surface.advance(u, 628.0 / steps);
-  const double error = std::abs(area(surface.phi()) / start - 1);
-  std::printf(
-      "every %d: Zalesak's disk, %d markers per cell and sign: area %.1f -> %.1f (%.2f %%)\n",
-      every, particles_per_cell, start, area(surface.phi()), 100 * error);
-  return error;
+  return std::abs(area(surface.phi()) / start - 1);
 }
 
 TEST(MacLevelSet, ParticleLevelSetKeepsZalesaksDisk) {
   // Reinitialised every 5 steps, the model's default.
   const double without = zalesak_area_error(0, 5);
   const double with = zalesak_area_error(16, 5);
-  EXPECT_LT(with, 0.025);
-  EXPECT_LT(with, 0.7 * without);
+  expect_figure(
+      {"Zalesak's disk after a turn, area error with 16 markers per cell and sign", "%", 2},
+      100 * with, Bound::below, 2.5);
+  expect_figure({"Zalesak's disk, area error with markers over the level set's alone", "", 3},
+                with / without, Bound::below, 0.7);
 }
 
 // The surface mesh of a circle is as long as the circle, of a sphere as large as the sphere,
@@ -113,7 +114,8 @@ TEST(MacSurfaceMesh, MeasuresCircleAndSphere) {
                                                   }));
   double length = 0;
   for (std::size_t k = 0; k < lines.size(); k += 2) length += (lines[k + 1] - lines[k]).norm();
-  EXPECT_NEAR(length, 2 * std::numbers::pi * radius, 0.01 * 2 * std::numbers::pi * radius);
+  expect_figure({"surface mesh of a circle on 64 cells, length error", "%", 3},
+                100 * (length / (2 * std::numbers::pi * radius) - 1), Bound::within, 1.0);
 
   const MacGrid<3> box = cube<3>(64, 1.0);
   const std::vector<Vec3> triangles = surface_mesh<3>(
@@ -123,9 +125,8 @@ TEST(MacSurfaceMesh, MeasuresCircleAndSphere) {
   for (std::size_t k = 0; k < triangles.size(); k += 3)
     area += 0.5 * (triangles[k + 1] - triangles[k]).cross(triangles[k + 2] - triangles[k]).norm();
   const double exact = 4 * std::numbers::pi * radius * radius;
-  std::printf("surface mesh: circle %.5f (exact %.5f), sphere %.5f (exact %.5f)\n", length,
-              2 * std::numbers::pi * radius, area, exact);
-  EXPECT_NEAR(area, exact, 0.01 * exact);
+  expect_figure({"surface mesh of a sphere on 64 cells, area error", "%", 3},
+                100 * (area / exact - 1), Bound::within, 1.0);
 }
 
 }  // namespace
