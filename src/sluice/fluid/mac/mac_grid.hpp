@@ -74,6 +74,15 @@ struct Lattice {
   // smallest and largest of the 2^D values used (MacCormack's clamp).
   Real sample(const std::vector<Real>& values, const Vec<D>& x, Real* low = nullptr,
               Real* high = nullptr, Real reach = 0) const {
+    // Two instances, so that the plain sample (most calls: velocities) keeps no range.
+    return low != nullptr || high != nullptr ? sample_in<true>(values, x, low, high, reach)
+                                             : sample_in<false>(values, x, low, high, reach);
+  }
+
+ private:
+  template <bool kRange>
+  Real sample_in(const std::vector<Real>& values, const Vec<D>& x, Real* low, Real* high,
+                 Real reach) const {
     GridIndex<D> base;
     std::array<Real, D> t;
     for (int a = 0; a < D; ++a) {
@@ -87,19 +96,35 @@ struct Lattice {
       base[a] = std::clamp(static_cast<int>(std::floor(s)), 0, std::max(dims[a] - 2, 0));
       t[a] = dims[a] > 1 ? s - base[a] : 0;
     }
+    // The corners as offsets in the storage from the base's index: base[a] + 1 stays inside
+    // wherever dims[a] > 1 (the clamp above), stays put where dims[a] == 1, and along the wrap
+    // axis is taken by index() across the seam.
+    const std::size_t k0 = index(base);
+    std::array<std::ptrdiff_t, D> step;
+    for (int a = 0; a < D; ++a) {
+      if (a == wrap_axis) {
+        GridIndex<D> next = base;
+        next[a] += 1;
+        step[a] = static_cast<std::ptrdiff_t>(index(next)) - static_cast<std::ptrdiff_t>(k0);
+      } else {
+        step[a] = dims[a] > 1 ? static_cast<std::ptrdiff_t>(stride(a)) : 0;
+      }
+    }
     Real sum = 0, lo = 1e300, hi = -1e300;
     for (int corner = 0; corner < (1 << D); ++corner) {
-      GridIndex<D> c = base;
+      std::ptrdiff_t offset = 0;
       Real w = 1;
       for (int a = 0; a < D; ++a) {
         const bool up = (corner >> a) & 1;
-        if (up) c[a] = a == wrap_axis ? c[a] + 1 : std::min(c[a] + 1, dims[a] - 1);
+        if (up) offset += step[a];
         w *= up ? t[a] : 1 - t[a];
       }
-      const Real v = values[index(c)];
+      const Real v = values[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(k0) + offset)];
       sum += w * v;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
+      if constexpr (kRange) {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
     }
     if (low != nullptr) *low = lo;
     if (high != nullptr) *high = hi;
