@@ -30,9 +30,10 @@ F3_SPACING = {"mac": 0.02}  # the others at 0.03 m
 
 
 def f2_cell(model):
-    out = dam_break_2d.out_dir(model, F2_SPACING[model])
-    path = os.path.join(out, "probes.csv")
-    if not os.path.exists(path):
+    spacing = F2_SPACING[model]
+    path = result_path(dam_break_2d.out_dir(model, spacing), dam_break_2d.kept_name(model, spacing),
+                       "probes.csv")
+    if path is None:
         return "–"
     reference = dam_break_2d.read_reference()
     times, fronts = read_probe(path, "front")

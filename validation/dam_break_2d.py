@@ -4,22 +4,24 @@ and at half of it, and measures the surge front against Koshizuka & Oka (1996) t
 [0, 0.70] s: (a) the RMS difference as it is, and (b) the RMS with the experiment's clock shifted
 by the one delay d in [0, 0.08] s that fits best (least squares over d in 1 ms steps), since no
 model lifts the experiment's gate. Writes the F2 table into docs/validation.md and the fronts to
-docs/img/f2_dam_break_front.png.
+docs/img/f2_dam_break_front.png. Each run's probes and statistics are kept in
+validation/results/dam_break_2d/, which --no-run reads where the run's directory is gone.
 
 usage: /usr/bin/python3 validation/dam_break_2d.py [--no-run] [--runs wcsph@0.025,mps@0.0125,...]
 """
 import argparse
-import json
 import math
 import os
 import subprocess
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from probes_csv import read_probe
-from runs import ROOT, each_run, save_figure, write_table
+from runs import (ROOT, each_run, keep_results, result_path, result_statistics, save_figure,
+                  write_table)
 
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 REFERENCE = os.path.join(ROOT, "validation", "data", "dam_break_front_koshizuka_oka_1996.tsv")
@@ -45,6 +47,19 @@ def read_reference():
 
 def out_dir(model, spacing):
     return os.path.join(ROOT, "out", "validation", f"dam_break_2d_{model}_{spacing:g}")
+
+
+def kept_name(model, spacing):
+    """The run's name in validation/results (keep_results)."""
+    return f"dam_break_2d/{model}_{spacing:g}"
+
+
+def front_path(model, spacing):
+    """The run's probes.csv, or its kept copy; exits where there is neither."""
+    path = result_path(out_dir(model, spacing), kept_name(model, spacing), "probes.csv")
+    if path is None:
+        sys.exit(f"dam_break_2d.py: no run of {model} at {spacing:g} m: run it (without --no-run)")
+    return path
 
 
 def run(model, spacing):
@@ -80,7 +95,8 @@ def best_delay(times, fronts, reference):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--no-run", action="store_true", help="use the runs in out/validation")
+    parser.add_argument("--no-run", action="store_true",
+                        help="use the runs in out/validation or their kept results")
     parser.add_argument("--runs", default=RUNS, help="MODEL@SPACING,...")
     args = parser.parse_args()
     reference = read_reference()
@@ -91,14 +107,14 @@ def main():
              "[m] | fitted delay [s] | wall s per simulated s |", "|---|---|---|---|---|---|"]
     coarse = {}
     for model, spacing in each_run(args.runs):
+        out = out_dir(model, spacing)
         if not args.no_run:
             run(model, spacing)
-        out = out_dir(model, spacing)
-        times, fronts = read_probe(os.path.join(out, "probes.csv"), "front")
+            keep_results(out, kept_name(model, spacing))
+        times, fronts = read_probe(front_path(model, spacing), "front")
         rms, _ = rms_error(times, fronts, reference)
         shifted, delay = best_delay(times, fronts, reference)
-        with open(os.path.join(out, "stats.json")) as f:
-            wall = json.load(f)["wall_seconds_per_simulated_second"]
+        wall = result_statistics(out, kept_name(model, spacing))["wall_per_simulated_second"]
         lines.append(f"| `{model}` | {spacing:g} | {rms:.3f} | {shifted:.3f} | {delay:.3f} | "
                      f"{wall:.0f} |")
         finer = model in coarse

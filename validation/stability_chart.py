@@ -122,9 +122,9 @@ def main():
                         f"{'yes' if what == guess else '**no**'} |")
     agree = sum(1 for g in grid.values() if g[2] == g[3])
     stable = sum(1 for g in grid.values() if (g[2] == "holds") == (g[3] == "holds"))
-    table = (f"| depth [m] | speed [m/s] | held drag D [N] | held lift L [N] | mu (W - L) [N] "
-             f"| force balance says | free run did | moved downstream [m] | rose [m] | bed "
-             f"carries at the end [N] | agree |\n|---|---|---|---|---|---|---|---|---|---|---|\n" +
+    table = ("| depth [m] | speed [m/s] | held drag D [N] | held lift L [N] | mu (W - L) [N] "
+             "| force balance says | free run did | moved downstream [m] | rose [m] | bed "
+             "carries at the end [N] | agree |\n|---|---|---|---|---|---|---|---|---|---|---|\n" +
              "\n".join(rows) +
              f"\n\nW = {WEIGHT:.0f} N, mu = {MU}: {agree} of {len(grid)} runs do what the balance "
              f"says; {stable} of {len(grid)} hold where it says they hold and move where it says "
