@@ -30,9 +30,7 @@ F3_SPACING = {"mac": 0.02}  # the others at 0.03 m
 
 
 def f2_cell(model):
-    spacing = F2_SPACING[model]
-    path = result_path(dam_break_2d.out_dir(model, spacing), dam_break_2d.kept_name(model, spacing),
-                       "probes.csv")
+    path = dam_break_2d.probes_path(model, F2_SPACING[model])
     if path is None:
         return "–"
     reference = dam_break_2d.read_reference()

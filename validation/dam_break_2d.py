@@ -54,12 +54,9 @@ def kept_name(model, spacing):
     return f"dam_break_2d/{model}_{spacing:g}"
 
 
-def front_path(model, spacing):
-    """The run's probes.csv, or its kept copy; exits where there is neither."""
-    path = result_path(out_dir(model, spacing), kept_name(model, spacing), "probes.csv")
-    if path is None:
-        sys.exit(f"dam_break_2d.py: no run of {model} at {spacing:g} m: run it (without --no-run)")
-    return path
+def probes_path(model, spacing):
+    """The run's probes.csv, or its kept copy, or None."""
+    return result_path(out_dir(model, spacing), kept_name(model, spacing), "probes.csv")
 
 
 def run(model, spacing):
@@ -111,7 +108,11 @@ def main():
         if not args.no_run:
             run(model, spacing)
             keep_results(out, kept_name(model, spacing))
-        times, fronts = read_probe(front_path(model, spacing), "front")
+        path = probes_path(model, spacing)
+        if path is None:
+            sys.exit(f"dam_break_2d.py: no run of {model} at {spacing:g} m: run it (without "
+                     "--no-run)")
+        times, fronts = read_probe(path, "front")
         rms, _ = rms_error(times, fronts, reference)
         shifted, delay = best_delay(times, fronts, reference)
         wall = result_statistics(out, kept_name(model, spacing))["wall_per_simulated_second"]
