@@ -114,8 +114,13 @@ def keep_results(out, name, files=("probes.csv",)):
     """Keeps a run's small files (gzipped) and its statistics (run_statistics) in
     validation/results/NAME, which is committed with the tables they give: a long run's figures
     outlive the machine and the session that ran it (its frames and checkpoints do not). Does
-    nothing where the run wrote none of them."""
+    nothing where the run wrote none of them, and keeps nothing over a kept copy that reaches a
+    later time (kept_reaches_farther)."""
     kept = os.path.join(RESULTS, name)
+    if kept_reaches_farther(out, name):
+        print(f"{os.path.basename(sys.argv[0])}: kept validation/results/{name}, which reaches "
+              f"further than {out}")
+        return
     for filename in files:
         path = os.path.join(out, filename)
         if os.path.exists(path):
@@ -131,18 +136,46 @@ def keep_results(out, name, files=("probes.csv",)):
             json.dump(statistics, f, indent=1, sort_keys=True)
 
 
+def last_time(path):
+    """The time of a CSV's last row (gzipped or not), where its first column is a time, or None."""
+    with open_text(path) as f:
+        if not f.readline().startswith("time"):
+            return None
+        last = None
+        for line in f:
+            last = line if line.strip() else last
+    return float(last.split(",")[0]) if last else None
+
+
+def kept_reaches_farther(out, name):
+    """Whether what keep_results kept of run NAME reaches a later time than OUT's own files (a
+    run begun again, or its directory restored from an earlier checkpoint, that has not yet got
+    as far): compared on the first kept time series that OUT holds too."""
+    kept = os.path.join(RESULTS, name)
+    for path in sorted(glob.glob(os.path.join(kept, "**", "*.csv.gz"), recursive=True)):
+        own = os.path.join(out, os.path.relpath(path, kept)[:-len(".gz")])
+        if not os.path.exists(own):
+            continue
+        kept_end, own_end = last_time(path), last_time(own)
+        if kept_end is not None and own_end is not None:
+            return kept_end > own_end
+    return False
+
+
 def result_path(out, name, filename):
-    """OUT/FILENAME, or else its copy that keep_results kept for run NAME, or None."""
+    """OUT/FILENAME, or else its copy that keep_results kept for run NAME, or None; the kept
+    copy first where it reaches further (kept_reaches_farther)."""
     path = os.path.join(out, filename)
-    if os.path.exists(path):
+    if os.path.exists(path) and not kept_reaches_farther(out, name):
         return path
     kept = os.path.join(RESULTS, name, filename + ".gz")
     return kept if os.path.exists(kept) else None
 
 
 def result_statistics(out, name):
-    """run_statistics(OUT), or else the statistics keep_results kept for run NAME, or None."""
-    statistics = run_statistics(out)
+    """run_statistics(OUT), or else the statistics keep_results kept for run NAME, or None; the
+    kept ones first where the kept run reaches further (kept_reaches_farther)."""
+    statistics = None if kept_reaches_farther(out, name) else run_statistics(out)
     kept = os.path.join(RESULTS, name, "statistics.json")
     if statistics is None and os.path.exists(kept):
         with open(kept) as f:

@@ -1,0 +1,68 @@
+"""validation/runs.py's kept results: a run that has not got as far as its kept copy (begun
+again, or resumed from an earlier checkpoint) neither replaces nor hides that copy."""
+import os
+import sys
+
+import pytest
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "validation"))
+import runs  # noqa: E402
+
+
+def write_probes(directory, end, step=0.1):
+    os.makedirs(directory, exist_ok=True)
+    rows = ["time [s],P1 [Pa]"] + [f"{k * step:g},{k}" for k in range(round(end / step) + 1)]
+    with open(os.path.join(directory, "probes.csv"), "w") as f:
+        f.write("\n".join(rows) + "\n")
+
+
+def kept_end(results, name):
+    return runs.last_time(os.path.join(results, name, "probes.csv.gz"))
+
+
+@pytest.fixture
+def results(tmp_path, monkeypatch):
+    monkeypatch.setattr(runs, "RESULTS", str(tmp_path / "results"))
+    return str(tmp_path / "results")
+
+
+def test_last_time_reads_the_last_row_of_a_time_series(tmp_path):
+    write_probes(str(tmp_path), 2.0)
+    assert runs.last_time(str(tmp_path / "probes.csv")) == pytest.approx(2.0)
+    with open(tmp_path / "table.csv", "w") as f:
+        f.write("model,drag\nwcsph,1\n")
+    assert runs.last_time(str(tmp_path / "table.csv")) is None
+
+
+def test_a_longer_run_replaces_its_kept_copy(tmp_path, results):
+    write_probes(str(tmp_path / "run"), 1.0)
+    runs.keep_results(str(tmp_path / "run"), "f3/mac")
+    write_probes(str(tmp_path / "run"), 2.0)
+    runs.keep_results(str(tmp_path / "run"), "f3/mac")
+    assert kept_end(results, "f3/mac") == pytest.approx(2.0)
+    assert runs.result_path(str(tmp_path / "run"), "f3/mac", "probes.csv") == \
+        str(tmp_path / "run" / "probes.csv")
+
+
+def test_a_shorter_run_neither_replaces_nor_hides_the_kept_copy(tmp_path, results):
+    write_probes(str(tmp_path / "run"), 2.0)
+    runs.keep_results(str(tmp_path / "run"), "f3/mac")
+    write_probes(str(tmp_path / "run"), 0.5)
+    runs.keep_results(str(tmp_path / "run"), "f3/mac")
+    assert kept_end(results, "f3/mac") == pytest.approx(2.0)
+    path = runs.result_path(str(tmp_path / "run"), "f3/mac", "probes.csv")
+    assert path == os.path.join(results, "f3", "mac", "probes.csv.gz")
+    assert runs.last_time(path) == pytest.approx(2.0)
+
+
+def test_the_statistics_follow_the_files_they_belong_to(tmp_path, results):
+    run = str(tmp_path / "run")
+    write_probes(run, 2.0)
+    leg = {"steps": 2000, "wall_seconds": 100.0, "simulated_seconds": 2.0, "threads": 2}
+    with open(os.path.join(run, "stats_leg_0.json"), "w") as f:
+        f.write(str(leg).replace("'", '"'))
+    runs.keep_results(run, "f3/mac")
+    write_probes(run, 0.5)
+    with open(os.path.join(run, "stats_leg_0.json"), "w") as f:
+        f.write(str(dict(leg, steps=500, simulated_seconds=0.5)).replace("'", '"'))
+    assert runs.result_statistics(run, "f3/mac")["steps"] == 2000
