@@ -88,8 +88,9 @@ double zalesak_area_error(int particles_per_cell, int every) {
     return sum * grid.h * grid.h;
   };
   const double start = area(surface.phi());
+  const SolidFaces<2> closed_box{make_face_field(grid, 0.0), make_face_field(grid, 0.0), {}, {}};
   const int steps = 628;
-  for (int s = 0; s < steps; ++s) surface.advance(u, 628.0 / steps);
+  for (int s = 0; s < steps; ++s) surface.advance(u, 628.0 / steps, closed_box);
   return std::abs(area(surface.phi()) / start - 1);
 }
 
@@ -102,6 +103,34 @@ TEST(MacLevelSet, ParticleLevelSetKeepsZalesaksDisk) {
       100 * with, Bound::below, 2.5);
   expect_figure({"Zalesak's disk, area error with markers over the level set's alone", "", 3},
                 with / without, Bound::below, 0.7);
+}
+
+// A box full of water (to its top) draining downwards at 1 m/s: through a top open to air the air comes in
+// behind the water, and after 2 s the surface lies 2 m below the top (within half a cell);
+// under a closed top the level set is held (the projection, not tested here, would stop the
+// flow). Before the air was let in, a cell of water under an open top stayed water for ever.
+TEST(MacLevelSet, AirComesInWhereTheFlowEntersAcrossAnOpenBoundary) {
+  const MacGrid<2> grid = cube<2>(16, 8.0);  // cells of 0.5 m
+  FaceField<2> u = make_face_field(grid);
+  for (double& v : u[1]) v = -1;
+  auto surface_after = [&](double top_open) {
+    FreeSurface<2> surface(grid, on_cells(grid, [](const Vec<2>& x) { return x[1] - 8; }), 0, 5);
+    SolidFaces<2> faces{make_face_field(grid, 0.0), make_face_field(grid, 0.0), {}, {}};
+    const Lattice<2> y_faces = grid.face_lattice(1);
+    for (std::size_t f = 0; f < y_faces.size(); ++f)
+      if (y_faces.coordinates(f)[1] == grid.cells[1]) faces.open[1][f] = top_open;
+    for (int step = 0; step < 20; ++step) surface.advance(u, 0.1, faces);
+    // The highest crossing on the middle column.
+    const Lattice<2> cells = grid.cell_lattice();
+    for (int j = grid.cells[1] - 1; j > 0; --j) {
+      const double above = surface.phi()[cells.index({8, j})];
+      const double below = surface.phi()[cells.index({8, j - 1})];
+      if (above >= 0 && below < 0) return (j - 0.5) * grid.h + grid.h * below / (below - above);
+    }
+    return surface.phi()[cells.index({8, grid.cells[1] - 1})] < 0 ? 8.0 : 0.0;
+  };
+  EXPECT_NEAR(surface_after(1.0), 6.0, 0.25);
+  EXPECT_EQ(surface_after(0.0), 8.0);
 }
 
 // The surface mesh of a circle is as long as the circle, of a sphere as large as the sphere,

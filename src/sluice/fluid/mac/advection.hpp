@@ -1,6 +1,6 @@
 // Advection of grid values by the face velocities: semi-Lagrangian (trace each point back
 // along the flow, second-order Runge-Kutta, and sample there), and MacCormack's predictor-
-// corrector on top of it with the clamp of Selle, Fedkiw, Kim, Liu & Rossignac (J. Sci.
+// corrector on top of it with the limiter of Selle, Fedkiw, Kim, Liu & Rossignac (J. Sci.
 // Comput. 35, 2008): second order where the field is smooth, never a new extremum.
 #pragma once
 
@@ -42,7 +42,10 @@ std::vector<Real> advect_semi_lagrangian(const Lattice<D>& lattice, const std::v
 }
 
 // MacCormack: the semi-Lagrangian prediction, corrected by half the error that a backward step
-// finds in it, and clamped into the range of the values the prediction was drawn from.
+// finds in it; where the correction would leave the range of the values the prediction was
+// drawn from, the prediction itself (Selle et al.'s revert). Clamped into that range instead,
+// the velocity beside the free surface and the solids kept energy it should have lost: F3 at
+// cells of 0.04 m gained 36 % from 1.9 to 2.5 s, and at 0.02 m diverged near 1.9 s.
 template <int D>
 std::vector<Real> advect_maccormack(const Lattice<D>& lattice, const std::vector<Real>& values,
                                     const MacGrid<D>& grid,
@@ -51,7 +54,8 @@ std::vector<Real> advect_maccormack(const Lattice<D>& lattice, const std::vector
   std::vector<Real> predicted = advect_semi_lagrangian(lattice, values, grid, u, dt, &low, &high);
   const std::vector<Real> returned = advect_semi_lagrangian(lattice, predicted, grid, u, -dt);
   exec::Default::for_each_light(values.size(), [&](std::size_t k) {
-    predicted[k] = std::clamp(predicted[k] + 0.5 * (values[k] - returned[k]), low[k], high[k]);
+    const Real corrected = predicted[k] + 0.5 * (values[k] - returned[k]);
+    if (corrected >= low[k] && corrected <= high[k]) predicted[k] = corrected;
   });
   return predicted;
 }

@@ -1,5 +1,10 @@
 #include "sluice/fluid/mac/free_surface.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "sluice/exec/policy.hpp"
+
 #include "sluice/fluid/mac/advection.hpp"
 #include "sluice/fluid/mac/level_set.hpp"
 
@@ -21,9 +26,11 @@ FreeSurface<D>::FreeSurface(const MacGrid<D>& grid, CellField phi, int particles
 }
 
 template <int D>
-void FreeSurface<D>::advance(const FaceField<D>& u, Real dt) {
+void FreeSurface<D>::advance(const FaceField<D>& u, Real dt, const SolidFaces<D>& solid) {
   ++steps_;
+  const CellField before = phi_;
   phi_ = advect_maccormack(grid_.cell_lattice(), phi_, grid_, u, dt);
+  let_air_in(u, dt, solid, before);
   if (markers_) {
     markers_->advect(grid_, u, dt);
     markers_->correct(grid_, phi_);
@@ -33,6 +40,40 @@ void FreeSurface<D>::advance(const FaceField<D>& u, Real dt) {
     markers_->correct(grid_, phi_);
     markers_->adjust_radii(grid_, phi_);
     if (steps_ % kReseedEvery == 0) markers_->reseed(grid_, phi_);
+  }
+}
+
+template <int D>
+void FreeSurface<D>::let_air_in(const FaceField<D>& u, Real dt, const SolidFaces<D>& solid,
+                                const CellField& before) {
+  // Sampled beyond the last cell's centre, the level set holds that cell's value: a cell of
+  // water on the boundary whose flow comes in from beyond would stay water for ever, a source
+  // (a 2D dam break's jet, once it had reached the open top, fed a sheet of water down the
+  // wall that doubled the water's mass and energy by 3.5 s). Beyond the face is air, the
+  // interface no farther out than the face: the ghost cell's level set is max(phi + h, h / 2),
+  // and the cell takes its upwind share of it, u dt / h, where that gives more air.
+  const Lattice<D> cells = grid_.cell_lattice();
+  const Real h = grid_.h;
+  for (int a = 0; a < D; ++a) {
+    if (a == grid_.periodic_axis) continue;
+    const Lattice<D> faces = grid_.face_lattice(a);
+    exec::Default::for_each_light(cells.size(), [&](std::size_t k) {
+      const GridIndex<D> c = cells.coordinates(k);
+      for (const int side : {0, 1}) {
+        if (c[a] != (side == 0 ? 0 : grid_.cells[a] - 1)) continue;
+        GridIndex<D> face = c;
+        face[a] += side;
+        const std::size_t f = faces.index(face);
+        const bool outlet =
+            !solid.outlet_pressure[a].empty() && !std::isnan(solid.outlet_pressure[a][f]);
+        if (solid.open[a][f] <= 0 || outlet) continue;
+        const Real inward = side == 0 ? u[a][f] : -u[a][f];
+        if (inward <= 0) continue;
+        const Real share = std::min(Real(1), inward * dt / h);
+        const Real ghost = std::max(before[k] + h, Real(0.5) * h);
+        phi_[k] = std::max(phi_[k], (1 - share) * before[k] + share * ghost);
+      }
+    });
   }
 }
 

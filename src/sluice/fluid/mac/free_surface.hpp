@@ -6,6 +6,7 @@
 
 #include "sluice/fluid/mac/mac_grid.hpp"
 #include "sluice/fluid/mac/particle_level_set.hpp"
+#include "sluice/fluid/mac/pressure_projection.hpp"
 
 namespace sluice {
 
@@ -18,8 +19,8 @@ class FreeSurface {
               int reinitialise_every);
 
   // One step of `dt` in the flow `u`: the level set and the markers carried, then corrected
-  // and reinitialised.
-  void advance(const FaceField<D>& u, Real dt);
+  // and reinitialised. `solid` says which faces of the grid's boundary open to air.
+  void advance(const FaceField<D>& u, Real dt, const SolidFaces<D>& solid);
 
   // Carries the level set through the cells marked `solid` from the cells around them, layer by
   // layer (each the mean of its neighbours already set), so that the surface runs on through a
@@ -43,6 +44,11 @@ class FreeSurface {
   }
 
  private:
+  // Where the flow comes in across a face of the grid's boundary that opens to air, the air
+  // it brings, which the advection's sampling (held at the last cell) cannot see.
+  void let_air_in(const FaceField<D>& u, Real dt, const SolidFaces<D>& solid,
+                  const CellField& before);
+
   MacGrid<D> grid_;
   CellField phi_;
   std::optional<ParticleLevelSet<D>> markers_;

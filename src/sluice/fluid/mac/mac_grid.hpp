@@ -71,7 +71,7 @@ struct Lattice {
 
   // Multilinear interpolation of `values` at x, the point clamped into the lattice grown by
   // `reach` spacings (beyond the lattice: linear extrapolation); `low` and `high` receive the
-  // smallest and largest of the 2^D values used (MacCormack's clamp).
+  // smallest and largest of the 2^D values used (MacCormack's limiter).
   Real sample(const std::vector<Real>& values, const Vec<D>& x, Real* low = nullptr,
               Real* high = nullptr, Real reach = 0) const {
     // Two instances, so that the plain sample (most calls: velocities) keeps no range.
@@ -110,7 +110,8 @@ struct Lattice {
         step[a] = dims[a] > 1 ? static_cast<std::ptrdiff_t>(stride(a)) : 0;
       }
     }
-    Real sum = 0, lo = 1e300, hi = -1e300;
+    Real sum = 0;
+    [[maybe_unused]] Real lo = 1e300, hi = -1e300;  // the range, where kRange
     for (int corner = 0; corner < (1 << D); ++corner) {
       std::ptrdiff_t offset = 0;
       Real w = 1;
@@ -126,8 +127,10 @@ struct Lattice {
         hi = std::max(hi, v);
       }
     }
-    if (low != nullptr) *low = lo;
-    if (high != nullptr) *high = hi;
+    if constexpr (kRange) {
+      if (low != nullptr) *low = lo;
+      if (high != nullptr) *high = hi;
+    }
     return sum;
   }
 };

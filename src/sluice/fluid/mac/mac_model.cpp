@@ -123,14 +123,34 @@ void MacModel<D>::append_stages(StageList&, StageList& after_bodies) {
 }
 
 template <int D>
+FaceField<D> MacModel<D>::flux_velocity() const {
+  // On a face partly within a solid, the projection holds only the flux, open u + (1 - open)
+  // u_solid: the velocity of the open part alone is all but free where little is open (F3's
+  // obstacle: 11-18 m/s on faces a quarter open and less, where the water moved at 2-3 m/s),
+  // and carried by the advection into the water beside it, it fed the flow energy until the
+  // run diverged. The face's mean velocity, the flux over its area, is what the water carries
+  // and is carried by: divergence-free as the projection left it.
+  FaceField<D> flux = now_.u;
+  const SolidFaces<D>& solid = solid_.faces();
+  for (int a = 0; a < D; ++a) {
+    exec::Default::for_each_light(flux[a].size(), [&](std::size_t f) {
+      const Real w = solid.open[a][f];
+      if (w < 1 && w > 0) flux[a][f] = w * flux[a][f] + (1 - w) * solid.velocity[a][f];
+    });
+  }
+  return flux;
+}
+
+template <int D>
 void MacModel<D>::advect(double dt) {
+  const FaceField<D> flux = flux_velocity();
   FaceField<D> advected;
   for (int a = 0; a < D; ++a) {
     const Lattice<D> faces = grid_.face_lattice(a);
-    advected[a] = p_.maccormack ? advect_maccormack(faces, now_.u[a], grid_, now_.u, dt)
-                                : advect_semi_lagrangian(faces, now_.u[a], grid_, now_.u, dt);
+    advected[a] = p_.maccormack ? advect_maccormack(faces, flux[a], grid_, flux, dt)
+                                : advect_semi_lagrangian(faces, flux[a], grid_, flux, dt);
   }
-  surface_.advance(now_.u, dt);
+  surface_.advance(flux, dt, solid_.faces());
   now_.u = std::move(advected);
   fill_inflow();
 }

@@ -77,6 +77,8 @@ class MacModel : public FluidSystem,
   };
 
   void advect(double dt);
+  // The face velocities with each face partly within a solid at its mean over the face.
+  FaceField<D> flux_velocity() const;
   // The level set beside the inlets: their water.
   void fill_inflow();
   void add_forces(double dt);
