@@ -105,10 +105,11 @@ TEST(MacLevelSet, ParticleLevelSetKeepsZalesaksDisk) {
                 with / without, Bound::below, 0.7);
 }
 
-// A box full of water (to its top) draining downwards at 1 m/s: through a top open to air the air comes in
-// behind the water, and after 2 s the surface lies 2 m below the top (within half a cell);
-// under a closed top the level set is held (the projection, not tested here, would stop the
-// flow). Before the air was let in, a cell of water under an open top stayed water for ever.
+// A box full to its top with water draining downwards at 1 m/s: through a top open to air the
+// air comes in behind the water, and after 2 s the surface lies 2 m below the top (within half
+// a cell); under a closed top the level set is held (the projection, not tested here, would
+// stop the flow). Before the air was let in, a cell of water under an open top stayed water for
+// ever.
 TEST(MacLevelSet, AirComesInWhereTheFlowEntersAcrossAnOpenBoundary) {
   const MacGrid<2> grid = cube<2>(16, 8.0);  // cells of 0.5 m
   FaceField<2> u = make_face_field(grid);
