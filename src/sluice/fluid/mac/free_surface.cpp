@@ -49,9 +49,9 @@ void FreeSurface<D>::let_air_in(const FaceField<D>& u, Real dt, const SolidFaces
   // Sampled beyond the last cell's centre, the level set holds that cell's value: a cell of
   // water on the boundary whose flow comes in from beyond would stay water for ever, a source
   // (a 2D dam break's jet, once it had reached the open top, fed a sheet of water down the
-  // wall: with cells of 0.05 m, +37 % of its mass and seven times its energy by 4 s). Beyond the
-  // face is air, the interface no farther out than the face: the ghost cell's level set is max(phi
-  // + h, h / 2), and the cell takes its upwind share of it, u dt / h, where that gives more air.
+  // wall: with cells of 0.05 m, +37 % of its mass and seven times its energy by 4 s). Beyond
+  // the face is air, the interface no farther out than the face. The ghost cell's level set is
+  // max(phi + h, h / 2); the cell takes its upwind share of it, u dt / h, where that is more air.
   const Lattice<D> cells = grid_.cell_lattice();
   const Real h = grid_.h;
   for (int a = 0; a < D; ++a) {
