@@ -34,23 +34,25 @@ def test_last_time_reads_the_last_row_of_a_time_series(tmp_path):
     assert runs.last_time(str(tmp_path / "table.csv")) is None
 
 
+def keep_two_runs(run, first_end, second_end):
+    """Keeps a run reaching first_end, then the same run begun again reaching second_end."""
+    for end in (first_end, second_end):
+        write_probes(run, end)
+        runs.keep_results(run, "f3/mac")
+
+
 def test_a_longer_run_replaces_its_kept_copy(tmp_path, results):
-    write_probes(str(tmp_path / "run"), 1.0)
-    runs.keep_results(str(tmp_path / "run"), "f3/mac")
-    write_probes(str(tmp_path / "run"), 2.0)
-    runs.keep_results(str(tmp_path / "run"), "f3/mac")
+    run = str(tmp_path / "run")
+    keep_two_runs(run, 1.0, 2.0)
     assert kept_end(results, "f3/mac") == pytest.approx(2.0)
-    assert runs.result_path(str(tmp_path / "run"), "f3/mac", "probes.csv") == \
-        str(tmp_path / "run" / "probes.csv")
+    assert runs.result_path(run, "f3/mac", "probes.csv") == os.path.join(run, "probes.csv")
 
 
 def test_a_shorter_run_neither_replaces_nor_hides_the_kept_copy(tmp_path, results):
-    write_probes(str(tmp_path / "run"), 2.0)
-    runs.keep_results(str(tmp_path / "run"), "f3/mac")
-    write_probes(str(tmp_path / "run"), 0.5)
-    runs.keep_results(str(tmp_path / "run"), "f3/mac")
+    run = str(tmp_path / "run")
+    keep_two_runs(run, 2.0, 0.5)
     assert kept_end(results, "f3/mac") == pytest.approx(2.0)
-    path = runs.result_path(str(tmp_path / "run"), "f3/mac", "probes.csv")
+    path = runs.result_path(run, "f3/mac", "probes.csv")
     assert path == os.path.join(results, "f3", "mac", "probes.csv.gz")
     assert runs.last_time(path) == pytest.approx(2.0)
 
