@@ -57,23 +57,26 @@ void FreeSurface<D>::let_air_in(const FaceField<D>& u, Real dt, const SolidFaces
   for (int a = 0; a < D; ++a) {
     if (a == grid_.periodic_axis) continue;
     const Lattice<D> faces = grid_.face_lattice(a);
-    exec::Default::for_each_light(cells.size(), [&](std::size_t k) {
-      const GridIndex<D> c = cells.coordinates(k);
-      for (const int side : {0, 1}) {
-        if (c[a] != (side == 0 ? 0 : grid_.cells[a] - 1)) continue;
+    Lattice<D> plane = cells;  // the cells of one side: a layer one cell thick across a
+    plane.dims[a] = 1;
+    for (const int side : {0, 1}) {
+      exec::Default::for_each_light(plane.size(), [&](std::size_t j) {
+        GridIndex<D> c = plane.coordinates(j);
+        c[a] = side == 0 ? 0 : grid_.cells[a] - 1;
+        const std::size_t k = cells.index(c);
         GridIndex<D> face = c;
         face[a] += side;
         const std::size_t f = faces.index(face);
         const bool outlet =
             !solid.outlet_pressure[a].empty() && !std::isnan(solid.outlet_pressure[a][f]);
-        if (solid.open[a][f] <= 0 || outlet) continue;
+        if (solid.open[a][f] <= 0 || outlet) return;
         const Real inward = side == 0 ? u[a][f] : -u[a][f];
-        if (inward <= 0) continue;
+        if (inward <= 0) return;
         const Real share = std::min(Real(1), inward * dt / h);
         const Real ghost = std::max(before[k] + h, Real(0.5) * h);
         phi_[k] = std::max(phi_[k], (1 - share) * before[k] + share * ghost);
-      }
-    });
+      });
+    }
   }
 }
 
