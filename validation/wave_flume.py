@@ -96,7 +96,7 @@ def regular_figures(out, name, kh, end):
     probes = read_columns(result_path(out, name, "probes.csv"))
     t = probes["time [s]"]
     if t[-1] < end * (1 - 1e-4):
-        return {"target": height, "diverged": t[-1]}  # the run stopped early
+        return {"target": height, "stopped": t[-1]}  # the run stopped early (its log says why)
     late = t >= end - 5 * period
     omega = 2 * math.pi / period
     z1 = harmonic(t[late], probes["two_wavelengths [m]"][late] - DEPTH, omega)
@@ -158,9 +158,9 @@ def main():
              "reflection | steps | wall time |", "|---" * 13 + "|"]
     for paddle, kh, spacing, model, f, s in regular:
         order = f"{paddle}, 2nd order"
-        if "diverged" in f:
+        if "stopped" in f:
             lines.append(f"| `{model}` | {order} | {kh:g} | | {spacing:g} m | {f['target']:.4f} | "
-                         f"diverged at t = {f['diverged']:.2f} s | | | | | | |")
+                         f"stopped at t = {f['stopped']:.2f} s | | | | | | |")
             continue
         lines.append(f"| `{model}` | {order} | {kh:g} | {f['ursell']:.0f} | {spacing:g} m "
                      f"({f['target'] / spacing:.1f} a height) | {f['target']:.4f} | "
@@ -182,7 +182,7 @@ def main():
     for paddle, marker in (("piston", "o"), ("flap", "s")):
         for model in models:
             rows = sorted(((kh, f) for p, kh, _, m, f, _ in regular
-                           if p == paddle and m == model and "diverged" not in f),
+                           if p == paddle and m == model and "stopped" not in f),
                           key=lambda row: row[0])
             if not rows:
                 continue
