@@ -100,14 +100,19 @@ TEST(OpenChannel, WcsphCarriesTheInflowToTheOutletAtItsDepth) {
 
 // mps at 0.02 m to 20 s, measured over the last 10: its start (the water set out at the lattice's
 // spacing and hydrostatic pressure, which mps's pressure equation does not hold exactly) swings
-// the outflow by 8 % for the first 10 s. Measured: flux out 0.51 % above the flux in (baseline
-// build 0.48 %). Its depth is a limit: 3.7 % below 0.3 m (baseline 3.4 %), the worst half second
-// 4.5 % below, and still falling slowly at 20 s (4 % at 30 s): its surface particles settle
-// closer than the lattice they came in on (the still tank's F1 water settles 0.7 % so).
+// the outflow by 8 % for the first 10 s, and its water is still settling after it: its depth is
+// a limit, 2.9 % below 0.3 m (baseline build 3.1 %), the worst half second 3.3 % below (3.6 %),
+// as its surface particles settle closer than the lattice they came in on (the still tank's F1
+// water settles 0.7 % so). The flux out from the flux in over those 10 s carries the settling
+// water's change of volume, which the builds' rounding moves: -0.07 % (baseline +0.95 %), within
+// the 1 % bar but by less than three times that spread, so it is a limit too. What is held: the
+// inlet supplies its flux, 0.3 m/s over 0.3 m (-0.013 %, baseline -0.011 %; bar 0.5 % as in 3D).
 TEST(OpenChannel, MpsCarriesTheInflowToTheOutlet) {
   const ChannelFigures f = run_channel({"model={name: mps}"}, 20, 10);
-  testing::expect_figure({"open channel `mps` (0.02 m): flux out from flux in", "%", 2},
-                         100 * (f.flux_out / f.flux_in - 1), testing::Bound::within, 1);
+  testing::expect_figure({"open channel `mps` (0.02 m): flux in from the inlet's", "%", 3},
+                         100 * (f.flux_in / (0.3 * kDepth) - 1), testing::Bound::within, 0.5);
+  testing::report_limit({"open channel `mps` (0.02 m): flux out from flux in", "%", 2},
+                        100 * (f.flux_out / f.flux_in - 1), testing::Bound::within, 1);
   testing::report_limit({"open channel `mps` (0.02 m): mean depth from its target", "%", 2},
                         100 * (f.depth / kDepth - 1), testing::Bound::within, 2);
   testing::report_limit(
