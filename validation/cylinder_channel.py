@@ -7,8 +7,8 @@ shedding) at several sizes: `mac` from cases/cylinder_channel_2d.yaml (2D-1 to 4
 0.01, 0.005 and 0.0025 m; 2D-2 to 8 s at 0.01 and 0.005 m), `wcsph` from
 cases/cylinder_channel_wcsph_2d.yaml (its inflow ramped up over 4 s, 2 s for 2D-2; 2D-1 to 7 s at
 spacings of 0.01 and 0.005 m, and 0.0025 m when --runs asks for it; 2D-2 to 8 s at 0.01 and
-0.005 m; c0 = 15 m/s and the background pressure rho0 c0^2). 2D-1: the means over the last span (0.5 s for mac, 1 s for wcsph)
-of C_D, C_L (2 F / (rho U^2 D), U = 0.2 m/s, D = 0.1 m) and of the pressure drop across the
+0.005 m; c0 = 15 m/s and the background pressure rho0 c0^2). 2D-1: the means over the last span
+(0.5 s for mac, 1 s for wcsph) of C_D, C_L (2 F / (rho U^2 D), U = 0.2 m/s, D = 0.1 m) and of the pressure drop across the
 cylinder; 2D-2: over the last 3 s, the Strouhal number D f / U of the lift's oscillation and the
 largest C_D and C_L of a fit of four harmonics of it (the SPH forces are noisy). Writes
 docs/validation.md's tables f7-2d1 and f7-2d2 and docs/img/f7_cylinder.png (each coefficient

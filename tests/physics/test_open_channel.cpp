@@ -21,7 +21,8 @@ namespace {
 using testing::load_case;
 using testing::run_until;
 
-constexpr double kDepth = 0.3;  // the inlet's and the outlet's
+constexpr double kDepth = 0.3;        // the inlet's and the outlet's
+constexpr double kInflowSpeed = 0.3;  // the inlet's [m/s]
 
 // The water's mean depth over x in [lo, hi]: in each column a spacing wide, the highest fluid
 // particle's height above the floor plus half a spacing (its own extent), averaged over the
@@ -110,7 +111,8 @@ TEST(OpenChannel, WcsphCarriesTheInflowToTheOutletAtItsDepth) {
 TEST(OpenChannel, MpsCarriesTheInflowToTheOutlet) {
   const ChannelFigures f = run_channel({"model={name: mps}"}, 20, 10);
   testing::expect_figure({"open channel `mps` (0.02 m): flux in from the inlet's", "%", 3},
-                         100 * (f.flux_in / (0.3 * kDepth) - 1), testing::Bound::within, 0.5);
+                         100 * (f.flux_in / (kInflowSpeed * kDepth) - 1), testing::Bound::within,
+                         0.5);
   testing::report_limit({"open channel `mps` (0.02 m): flux out from flux in", "%", 2},
                         100 * (f.flux_out / f.flux_in - 1), testing::Bound::within, 1);
   testing::report_limit({"open channel `mps` (0.02 m): mean depth from its target", "%", 2},
