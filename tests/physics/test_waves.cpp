@@ -98,7 +98,7 @@ TEST(Waves, ActiveAbsorptionTakesInWhatAClosedEndSendsBack) {
 // mac at 0.04 m cells (2 across the wave's height, 2.5 down the box's draft) to 18 s; the last
 // five periods: the box's heave at the wave's frequency over the incident amplitude (Goda &
 // Suzuki from the two gauges ahead of it) within 10 % of the Froude–Krylov prediction, 0.978
-// (measured +2.4 % from every step; the script's rows every 0.02 s give +2.8 %; 50 s on one
+// (measured +1.5 % from every step; the script's rows every 0.02 s give +0.1 %; 50 s on one
 // thread). A flat plate's added mass, rho pi B^2 / 8, would raise the prediction by 3 %: the bar
 // holds either way.
 TEST(Waves, FloatingBoxHeavesAsLinearTheoryPredicts) {
