@@ -54,8 +54,8 @@ Benchmark2D1 run_2d1(Simulation<2>& sim, double end, double from, const char* la
 
 // 2D-1 at 0.005 m cells (20 across the cylinder) to 4 s, where the drag has settled to 0.01 %
 // a second: its drag coefficient, the mean of the last 0.5 s, within 5 % of the range's middle
-// (measured 3.9 % above it; 6.6 % above at 0.01 m cells), the pressure drop across the cylinder
-// within 2 % (measured 0.07 %; both pressures means over the same 0.5 s, for a step's pressure
+// (measured 4.8 % above it; 6.3 % above at 0.01 m cells), the pressure drop across the cylinder
+// within 2 % (measured 0.08 %; both pressures means over the same 0.5 s, for a step's pressure
 // varies from the next by a percent); the lift, the difference of two nearly equal pressures on a
 // staircase of cut cells, is reported (40 % below, and not steady to its second digit).
 TEST(OpenBoundaries, CylinderInAChannelMeetsSchaeferTurek2D1) {
