@@ -57,7 +57,7 @@ void FreeSurface<D>::let_air_in(const FaceField<D>& u, Real dt, const SolidFaces
   for (int a = 0; a < D; ++a) {
     if (a == grid_.periodic_axis) continue;
     const Lattice<D> faces = grid_.face_lattice(a);
-    Lattice<D> plane = cells;  // the cells of one side: a layer one cell thick across a
+    Lattice<D> plane = cells;  // one side's cells: a layer one cell thick across axis a
     plane.dims[a] = 1;
     for (const int side : {0, 1}) {
       exec::Default::for_each_light(plane.size(), [&](std::size_t j) {
