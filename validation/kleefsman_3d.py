@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """F3 of VALIDATION.md: the Kleefsman et al. (2005) 3D dam break with an obstacle
 (cases/kleefsman_3d.yaml), run with each model and spacing to 6 s, against the experiment and
-beside seed 000's MPS at the same particle distance. Writes the F3 table into docs/validation.md,
+beside seed 000's MPS at the same particle distance. Writes the F3 tables into docs/validation.md
+(with f3-mass, the water's mass of each run that kept its energy.csv),
 docs/img/f3_kleefsman_gauges.png (the four gauges) and docs/img/f3_kleefsman_pressure.png (P1-P4,
 5 ms running means). The figures' definitions are in kleefsman_figures.py.
 
@@ -23,7 +24,8 @@ import matplotlib
 matplotlib.use("Agg")
 import kleefsman_figures as f3
 import matplotlib.pyplot as plt
-from runs import (ROOT, each_run, keep_results, model_runs_parser, result_path,
+import numpy as np
+from runs import (ROOT, each_run, keep_results, model_runs_parser, open_text, result_path,
                   result_statistics, run_model, save_figure, write_table)
 
 # Every model at 0.03 m; mac's cells must tile the 3.22 m x 1 m tank, so its coarse run is at
@@ -89,6 +91,30 @@ def table(results, experiment, end):
             continue
         lines.append(row(f"sluice `{model}`, {spacing:g} m", f3.figures(series, experiment, span),
                          f"{span[1]:.2f}", cell(wall, 0)))
+    return "\n".join(lines)
+
+
+MASS_TIMES = (1.0, 2.0, 4.0)
+
+
+def mass_table(results, args):
+    """The water's mass over each run that kept its energy.csv: a particle model's is its
+    particles' and cannot change; the grid's is its level set's volume, which can."""
+    times = " / ".join(f"{t:g}" for t in MASS_TIMES)
+    lines = [f"| run | water's mass at the start [kg] | at {times} s [kg] | at the end [kg] | "
+             "end / start - 1 |", "|---|---|---|---|---|"]
+    for model, spacing in results:
+        path = result_path(run_dir(args, model, spacing), f"kleefsman_3d/{model}_{spacing:g}",
+                           "energy.csv")
+        if path is None:
+            continue
+        with open_text(path) as f:
+            energy = np.genfromtxt(f, delimiter=",", names=True)
+        t, mass = energy["time"], energy["fluid_mass"]
+        at = " / ".join(cell(mass[np.searchsorted(t, s)] if s <= t[-1] else math.nan, 1)
+                        for s in MASS_TIMES)
+        lines.append(f"| sluice `{model}`, {spacing:g} m (to {t[-1]:.2f} s) | {mass[0]:.1f} | "
+                     f"{at} | {mass[-1]:.1f} | {100 * (mass[-1] / mass[0] - 1):+.1f} % |")
     return "\n".join(lines)
 
 
@@ -195,7 +221,7 @@ def main():
             if interval:
                 extra += (f"probe_interval={interval}",)
             run_model("kleefsman_3d", out, model, spacing, end, args, extra)
-        keep_results(out, name)
+        keep_results(out, name, ("probes.csv", "energy.csv"))
         path = result_path(out, name, "probes.csv")
         series = f3.read_probes(path) if path else None
         span = (0.0, min(end, float(series["time"][-1]))) if series is not None else (0.0, end)
@@ -223,6 +249,7 @@ def main():
         write_table("validation.md", group["table"], table(mine, experiment, end))
         if not group["fine"]:
             write_table("validation.md", "f3-bars", bars_table(mine, experiment))
+            write_table("validation.md", "f3-mass", mass_table(mine, args))
         plot(mine, experiment, f3.GAUGES, "F3: water height at the gauges (x in mm)",
              group["gauges"], 1.0, "m", group["seed"])
         plot(mine, experiment, f3.SENSORS[:4],
