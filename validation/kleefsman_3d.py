@@ -56,6 +56,11 @@ def run_dir(args, model, spacing):
     return os.path.join(ROOT, f"{args.out}_{model}_{spacing:g}")
 
 
+def kept_name(model, spacing, variants=False):
+    """The name keep_results keeps the run under (validation/results/NAME)."""
+    return f"kleefsman_3d{'_variants' if variants else ''}/{model}_{spacing:g}"
+
+
 def cell(value, digits, scale=1.0):
     return "–" if value is None or math.isnan(value) else f"{value * scale:.{digits}f}"
 
@@ -104,8 +109,7 @@ def mass_table(results, args):
     lines = [f"| run | water's mass at the start [kg] | at {times} s [kg] | at the end [kg] | "
              "end / start - 1 |", "|---|---|---|---|---|"]
     for model, spacing in results:
-        path = result_path(run_dir(args, model, spacing), f"kleefsman_3d/{model}_{spacing:g}",
-                           "energy.csv")
+        path = result_path(run_dir(args, model, spacing), kept_name(model, spacing), "energy.csv")
         if path is None:
             continue
         with open_text(path) as f:
@@ -212,7 +216,7 @@ def main():
         """The run's probes, span and wall time per simulated second, from its directory or
         what keep_results kept (running it first where `run`)."""
         out = run_dir(args, model, spacing)
-        name = f"kleefsman_3d{'_variants' if args.variants else ''}/{model}_{spacing:g}"
+        name = kept_name(model, spacing, args.variants)
         if run:
             interval = PROBE_INTERVAL.get(model.split("+")[0])
             # A checkpoint every 0.1 s, not the case's 0.5 s: a run of hours stopped at a
