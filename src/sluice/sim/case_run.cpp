@@ -313,8 +313,13 @@ void CaseRun::step(double until) {
   const FluidObservation& fluid = sim.fluid().observation();
   FluidGuard& fluid_guard = sim.fluid().guard();
   auto& timers = sim.timers();
-  const double due = std::min(
-      {o.schedule.next_output, o.schedule.next_probe, o.schedule.next_body, end_time_, until});
+  // Where the end (or `until`) and an output fall within rounding of each other, the step lands
+  // on the output's time, as it does in a run that goes on past it: else a run stopped there
+  // and resumed would differ from that run by its last step's rounding, and so everywhere.
+  const double scheduled =
+      std::min({o.schedule.next_output, o.schedule.next_probe, o.schedule.next_body});
+  const double stop = std::min(end_time_, until);
+  const double due = reached(stop, scheduled) ? scheduled : stop;
   const double before = sim.time();
   sim.step(due);
   const double t = sim.time();
