@@ -22,6 +22,11 @@ class FreeSurface {
   // and reinitialised. `solid` says which faces of the grid's boundary open to air.
   void advance(const FaceField<D>& u, Real dt, const SolidFaces<D>& solid);
 
+  // Shifts the level set by one value so that the water it holds outside the `excluded` cells
+  // is `volume` (volume_correction.hpp), the markers moved with the surface (once the shifts
+  // add up to a hundredth of a cell). Returns the volume this added.
+  double keep_volume(const std::vector<char>& excluded, double volume);
+
   // Carries the level set through the cells marked `solid` from the cells around them, layer by
   // layer (each the mean of its neighbours already set), so that the surface runs on through a
   // body as if it were water: where the body moves away, the water it uncovers is the water its
@@ -42,6 +47,8 @@ class FreeSurface {
     a(phi_, steps_);
     if (markers_) markers_->archive_state(a);
   }
+  // Checkpoints of a run that keeps the volume: the shift the markers have yet to follow.
+  void archive_kept_volume(StateArchive& a) { a(unfollowed_shift_); }
 
  private:
   // Where the flow comes in across a face of the grid's boundary that opens to air, the air
@@ -54,6 +61,7 @@ class FreeSurface {
   std::optional<ParticleLevelSet<D>> markers_;
   int reinitialise_every_;
   long steps_ = 0;
+  Real unfollowed_shift_ = 0;  // keep_volume's shifts since the markers last followed
 };
 
 }  // namespace sluice

@@ -12,6 +12,7 @@
 #include "sluice/fluid/mac/level_set.hpp"
 #include "sluice/fluid/mac/surface_mesh.hpp"
 #include "sluice/fluid/mac/velocity_extension.hpp"
+#include "sluice/fluid/mac/volume_correction.hpp"
 
 namespace sluice {
 
@@ -99,9 +100,9 @@ std::string MacModel<D>::describe() const {
   for (int a = 1; a < D; ++a) cells += " x " + std::to_string(grid_.cells[a]);
   return fmt::format(
       "mac: {} cells of {} m, {} advection, pressure by {} (tolerance {:g}), {} marker "
-      "particles per cell and sign, cfl {}",
+      "particles per cell and sign, cfl {}{}",
       cells, grid_.h, p_.maccormack ? "MacCormack" : "semi-Lagrangian", solver_, p_.tolerance,
-      p_.particles_per_cell, p_.cfl);
+      p_.particles_per_cell, p_.cfl, p_.volume_correction ? ", volume kept" : "");
 }
 
 template <int D>
@@ -153,7 +154,14 @@ void MacModel<D>::advect(double dt) {
     advected[a] = p_.maccormack ? advect_maccormack(faces, flux[a], grid_, flux, dt)
                                 : advect_semi_lagrangian(faces, flux[a], grid_, flux, dt);
   }
+  // The water the surface should hold after the step (the bodies stand still until the
+  // boundaries' stage).
+  const double kept =
+      p_.volume_correction
+          ? water_volume() + boundary_inflow<D>(grid_, flux, surface_.phi(), solid_.faces(), dt)
+          : 0.0;
   surface_.advance(flux, dt, solid_.faces());
+  if (p_.volume_correction) restored_ += surface_.keep_volume(solid_.solid_cells(), kept);
   now_.u = std::move(advected);
   fill_inflow();
 }
@@ -542,11 +550,7 @@ FluidSize MacModel<D>::size() const {
 
 template <int D>
 double MacModel<D>::water_volume() const {
-  const Real cell_volume = std::pow(grid_.h, D);
-  const CellField& phi = surface_.phi();
-  return exec::Default::sum_of(phi.size(), [&](std::size_t k) {
-    return solid_.cell_is_solid(k) ? 0.0 : water_fraction(phi[k], grid_.h) * cell_volume;
-  });
+  return water_volume_of(grid_, surface_.phi(), solid_.solid_cells());
 }
 
 template <int D>
@@ -568,11 +572,17 @@ FluidEnergy MacModel<D>::energy() const {
 
 template <int D>
 std::vector<std::pair<std::string, double>> MacModel<D>::counters() const {
-  return {{"pressure solves", projections_},
-          {"pressure iterations", pressure_iterations_},
-          {"unconverged pressure solves", unconverged_},
-          {"pressure solves made again without a contact", releases_},
-          {"marker particles", static_cast<double>(surface_.marker_count())}};
+  std::vector<std::pair<std::string, double>> out = {
+      {"pressure solves", projections_},
+      {"pressure iterations", pressure_iterations_},
+      {"unconverged pressure solves", unconverged_},
+      {"pressure solves made again without a contact", releases_},
+      {"marker particles", static_cast<double>(surface_.marker_count())}};
+  if (p_.volume_correction) {
+    out.emplace_back(D == 3 ? "water volume restored [m^3]" : "water area restored [m^2]",
+                     restored_);
+  }
+  return out;
 }
 
 template <int D>
@@ -581,6 +591,10 @@ void MacModel<D>::archive_state(StateArchive& a) {
   projection_.archive_state(a);
   surface_.archive_state(a);
   a(projections_, pressure_iterations_, unconverged_, releases_);
+  if (p_.volume_correction) {  // (a checkpoint is of one version of the case: the same choice)
+    a(restored_);
+    surface_.archive_kept_volume(a);
+  }
   // Not carry_through: that would move the surface, which the checkpoint holds as it was.
   if (a.reading() && !motion_.empty()) solid_.place_bodies(motion_);
 }

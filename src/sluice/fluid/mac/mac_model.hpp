@@ -121,6 +121,7 @@ class MacModel : public FluidSystem,
   ProjectionReport last_projection_;
   double projections_ = 0, pressure_iterations_ = 0, unconverged_ = 0;
   double releases_ = 0;  // projections made again with a contact let go
+  double restored_ = 0;  // water volume the volume correction gave back (negative: took)
 };
 
 }  // namespace sluice

@@ -28,6 +28,7 @@ MacParameters read_mac_parameters(const io::CaseConfig& config) {
       static_cast<int>(model.optional_non_negative("particles_per_cell", p.particles_per_cell));
   p.reinitialise_every =
       static_cast<int>(model.optional_positive("reinitialise_every", p.reinitialise_every));
+  p.volume_correction = model.optional<bool>("volume_correction", p.volume_correction);
   model.finish();
   return p;
 }

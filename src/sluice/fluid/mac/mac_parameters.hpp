@@ -28,6 +28,8 @@ struct MacParameters {
   // Steps between reinitialisations of the level set: each one moves the surface a little, and
   // every step loses Zalesak's disk 19 % of its area where every 5 keeps it within 3 %.
   int reinitialise_every = 5;
+  // The level set shifted after each step to keep its water (volume_correction.hpp).
+  bool volume_correction = false;
 };
 
 MacParameters read_mac_parameters(const io::CaseConfig& config);

@@ -135,6 +135,15 @@ void ParticleLevelSet<D>::adjust_radii(const MacGrid<D>& grid, const CellField& 
 }
 
 template <int D>
+void ParticleLevelSet<D>::follow_shift(const MacGrid<D>& grid, const CellField& phi, Real shift) {
+  const Lattice<D> cells = grid.cell_lattice();
+  exec::Default::for_each(markers_.size(), [&](std::size_t i) {
+    Marker& m = markers_[i];
+    m.x -= shift * normal_at(cells, phi, m.x);
+  });
+}
+
+template <int D>
 std::vector<Vec<D>> ParticleLevelSet<D>::positions() const {
   std::vector<Vec<D>> out;
   for (const Marker& m : markers_) out.push_back(m.x);

@@ -27,6 +27,9 @@ class ParticleLevelSet {
   // After reinitialisation: each particle's radius from its distance to the surface, and the
   // particles still escaped by more than 1.5 radii dropped.
   void adjust_radii(const MacGrid<D>& grid, const CellField& phi);
+  // After phi was raised by `shift` everywhere (now `phi`): each particle moved along the
+  // normal so that it keeps its level, and no sphere takes the shift back.
+  void follow_shift(const MacGrid<D>& grid, const CellField& phi, Real shift);
 
   std::size_t size() const { return markers_.size(); }
   // Positions and signs, for the output and the tests.
