@@ -60,15 +60,16 @@ TEST(MacVolumeCorrection, ShiftRaisesAFlatSurfaceByTheMissingVolume) {
   const std::vector<char> none(grid.cell_count(), 0);
   for (const double target : {1.56, 1.6, 1.62}) {  // levels 0.78, 0.8 (a face), 0.81
     CellField phi = flat(grid, 0.79);
-    const Real shift = shift_to_volume(grid, phi, none, target);
-    EXPECT_NEAR(shift, 0.79 - target / 2, 1e-12) << target;
+    const VolumeShift shifted = shift_to_volume(grid, phi, none, target);
+    EXPECT_NEAR(shifted.shift, 0.79 - target / 2, 1e-12) << target;
+    EXPECT_NEAR(shifted.added, target - 1.58, 1e-12) << target;
     EXPECT_NEAR(water_volume_of(grid, phi, none), target, 1e-12) << target;
   }
   CellField phi = flat(grid, 0.73);
-  EXPECT_NEAR(shift_to_volume(grid, phi, none, 3.0), -0.025, 1e-12);
+  EXPECT_NEAR(shift_to_volume(grid, phi, none, 3.0).shift, -0.025, 1e-12);
   // No surface (all water): nothing to shift.
   CellField full(grid.cell_count(), -1.0);
-  EXPECT_EQ(shift_to_volume(grid, full, none, 3.0), 0);
+  EXPECT_EQ(shift_to_volume(grid, full, none, 3.0).shift, 0);
 }
 
 // Water leaving across the open top counts, air coming in across it does not; a closed top

@@ -47,17 +47,16 @@ void FreeSurface<D>::advance(const FaceField<D>& u, Real dt, const SolidFaces<D>
 
 template <int D>
 double FreeSurface<D>::keep_volume(const std::vector<char>& excluded, double volume) {
-  const double before = water_volume_of(grid_, phi_, excluded);
-  const Real shift = shift_to_volume(grid_, phi_, excluded, volume);
+  const VolumeShift shifted = shift_to_volume(grid_, phi_, excluded, volume);
   // The markers follow the shifts once these add up to a hundredth of a cell: every sphere is
   // a tenth of a cell or more, so none escapes for want of it, and following each step's
   // shift (typically a thousandth of a cell) made a 3D step a third slower.
-  unfollowed_shift_ += shift;
+  unfollowed_shift_ += shifted.shift;
   if (markers_ && std::abs(unfollowed_shift_) >= kFollowShifts * grid_.h) {
     markers_->follow_shift(grid_, phi_, unfollowed_shift_);
     unfollowed_shift_ = 0;
   }
-  return water_volume_of(grid_, phi_, excluded) - before;
+  return shifted.added;
 }
 
 template <int D>

@@ -60,11 +60,12 @@ double boundary_inflow(const MacGrid<D>& grid, const FaceField<D>& u, const Cell
 }
 
 template <int D>
-Real shift_to_volume(const MacGrid<D>& grid, CellField& phi, const std::vector<char>& excluded,
-                     double volume) {
+VolumeShift shift_to_volume(const MacGrid<D>& grid, CellField& phi,
+                            const std::vector<char>& excluded, double volume) {
   const Real h = grid.h;
   const Real cell_volume = std::pow(h, D);
-  double now = water_volume_of(grid, phi, excluded);
+  const double start = water_volume_of(grid, phi, excluded);
+  double now = start;
   Real shift = 0;
   const double tolerance = 1e-12 * std::max(volume, double(cell_volume));
   for (int i = 0; i < kNewtonIterations && std::abs(now - volume) > tolerance; ++i) {
@@ -80,7 +81,7 @@ Real shift_to_volume(const MacGrid<D>& grid, CellField& phi, const std::vector<c
     shift += step;
     now = water_volume_of(grid, phi, excluded);
   }
-  return shift;
+  return {shift, now - start};
 }
 
 template bool opens_to_air<2>(const SolidFaces<2>&, int, std::size_t);
@@ -91,7 +92,9 @@ template double boundary_inflow<2>(const MacGrid<2>&, const FaceField<2>&, const
                                    const SolidFaces<2>&, Real);
 template double boundary_inflow<3>(const MacGrid<3>&, const FaceField<3>&, const CellField&,
                                    const SolidFaces<3>&, Real);
-template double shift_to_volume<2>(const MacGrid<2>&, CellField&, const std::vector<char>&, double);
-template double shift_to_volume<3>(const MacGrid<3>&, CellField&, const std::vector<char>&, double);
+template VolumeShift shift_to_volume<2>(const MacGrid<2>&, CellField&, const std::vector<char>&,
+                                        double);
+template VolumeShift shift_to_volume<3>(const MacGrid<3>&, CellField&, const std::vector<char>&,
+                                        double);
 
 }  // namespace sluice

@@ -31,11 +31,17 @@ template <int D>
 double boundary_inflow(const MacGrid<D>& grid, const FaceField<D>& u, const CellField& phi,
                        const SolidFaces<D>& solid, Real dt);
 
+// What shift_to_volume did: the shift added to phi and the volume it added.
+struct VolumeShift {
+  Real shift = 0;
+  double added = 0;
+};
+
 // Shifts `phi` by one value so that water_volume_of(grid, phi, excluded) is `volume`, by
 // Newton's method on the piecewise linear volume, the shift at most a quarter of a cell (a
-// surface almost gone is not blown up). Returns the shift.
+// surface almost gone is not blown up).
 template <int D>
-Real shift_to_volume(const MacGrid<D>& grid, CellField& phi, const std::vector<char>& excluded,
-                     double volume);
+VolumeShift shift_to_volume(const MacGrid<D>& grid, CellField& phi,
+                            const std::vector<char>& excluded, double volume);
 
 }  // namespace sluice
