@@ -178,6 +178,29 @@ struct MacGrid {
   std::size_t cell_count() const { return cell_lattice().size(); }
 };
 
+// Calls visit(axis, side, cell, face) for each face on the grid's boundary (none along the
+// periodic axis; side 0 at the lower end, 1 at the upper) with the index of the cell inside it
+// and the face's index in its axis's face lattice. Serial: the boundary holds few faces.
+template <int D, class Visit>
+void for_each_boundary_face(const MacGrid<D>& grid, Visit&& visit) {
+  const Lattice<D> cells = grid.cell_lattice();
+  for (int a = 0; a < D; ++a) {
+    if (a == grid.periodic_axis) continue;
+    const Lattice<D> faces = grid.face_lattice(a);
+    Lattice<D> plane = cells;  // one side's cells: a layer one cell thick across axis a
+    plane.dims[a] = 1;
+    for (const int side : {0, 1}) {
+      for (std::size_t j = 0; j < plane.size(); ++j) {
+        GridIndex<D> c = plane.coordinates(j);
+        c[a] = side == 0 ? 0 : grid.cells[a] - 1;
+        GridIndex<D> face = c;
+        face[a] += side;
+        visit(a, side, cells.index(c), faces.index(face));
+      }
+    }
+  }
+}
+
 // The share of a cell that the level set's surface leaves in the water (a smeared step of
 // width h).
 inline Real water_fraction(Real phi, Real h) {

@@ -32,30 +32,16 @@ double water_volume_of(const MacGrid<D>& grid, const CellField& phi,
 template <int D>
 double boundary_inflow(const MacGrid<D>& grid, const FaceField<D>& u, const CellField& phi,
                        const SolidFaces<D>& solid, Real dt) {
-  const Lattice<D> cells = grid.cell_lattice();
   const Real area = std::pow(grid.h, D - 1);
   double inflow = 0;
-  for (int a = 0; a < D; ++a) {
-    if (a == grid.periodic_axis) continue;
-    const Lattice<D> faces = grid.face_lattice(a);
-    Lattice<D> plane = cells;  // one side's cells: a layer one cell thick across axis a
-    plane.dims[a] = 1;
-    for (const int side : {0, 1}) {
-      inflow += exec::Default::sum_of(plane.size(), [&](std::size_t j) {
-        GridIndex<D> c = plane.coordinates(j);
-        c[a] = side == 0 ? 0 : grid.cells[a] - 1;
-        GridIndex<D> face = c;
-        face[a] += side;
-        const std::size_t f = faces.index(face);
-        // A closed face (a wall; an inlet) moves at its solid's velocity whatever the
-        // extension left in `u` there.
-        const Real normal = solid.open[a][f] > 0 ? u[a][f] : solid.velocity[a][f];
-        const Real inward = side == 0 ? normal : -normal;
-        if (inward > 0 && opens_to_air(solid, a, f)) return 0.0;
-        return inward * water_fraction(phi[cells.index(c)], grid.h) * area * dt;
-      });
-    }
-  }
+  for_each_boundary_face(grid, [&](int a, int side, std::size_t k, std::size_t f) {
+    // A closed face (a wall; an inlet) moves at its solid's velocity whatever the extension
+    // left in `u` there.
+    const Real normal = solid.open[a][f] > 0 ? u[a][f] : solid.velocity[a][f];
+    const Real inward = side == 0 ? normal : -normal;
+    if (inward > 0 && opens_to_air(solid, a, f)) return;
+    inflow += inward * water_fraction(phi[k], grid.h) * area * dt;
+  });
   return inflow;
 }
 
