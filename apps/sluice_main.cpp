@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "option_checks.hpp"
+#include "sluice/core/build_info.hpp"
 #include "sluice/core/errors.hpp"
 #include "sluice/exec/policy.hpp"
 #include "sluice/io/case_config.hpp"
@@ -86,6 +87,8 @@ int main(int argc, char** argv) {
   sluice::HypreSession hypre;
   CLI::App app{"sluice: free-surface flow with rigid bodies (particle methods)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", fmt::format("sluice {} (source {})", sluice::sluice_version(),
+                                                sluice::source_revision()));
   std::string case_path, out_dir, stats_path, resume_dir, device;
   std::vector<std::string> overrides;
   int threads = 0;

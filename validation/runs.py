@@ -87,9 +87,10 @@ def run_model(case, out, model, spacing, end, args, extra=()):
 
 def run_statistics(out):
     """The steps and wall seconds of every leg of the run in out added up, the wall seconds per
-    simulated second over them, and the most threads a leg ran on: {"steps", "wall",
-    "wall_per_simulated_second", "threads"}, or None
-    where no leg finished. Reads out/stats.json where the run has no legs of its own."""
+    simulated second over them, the most threads a leg ran on, and the source the last leg was
+    built from: {"steps", "wall", "wall_per_simulated_second", "threads", "source_revision"}
+    (None where the statistics predate it), or None where no leg finished. Reads out/stats.json
+    where the run has no legs of its own."""
     paths = sorted(glob.glob(os.path.join(out, "stats_leg_*.json"))) or \
         glob.glob(os.path.join(out, "stats.json"))
     legs = []
@@ -104,7 +105,8 @@ def run_statistics(out):
     wall = sum(leg["wall_seconds"] for leg in legs)
     simulated = sum(leg["simulated_seconds"] - leg.get("start_seconds", 0) for leg in legs)
     return {"steps": steps, "wall": wall, "threads": max(leg["threads"] for leg in legs),
-            "wall_per_simulated_second": wall / simulated if simulated > 0 else None}
+            "wall_per_simulated_second": wall / simulated if simulated > 0 else None,
+            "source_revision": legs[-1].get("source_revision")}
 
 
 RESULTS = os.path.join(ROOT, "validation", "results")
@@ -150,8 +152,11 @@ def last_time(path):
 def kept_reaches_farther(out, name):
     """Whether what keep_results kept of run NAME reaches a later time than OUT's own files (a
     run begun again, or its directory restored from an earlier checkpoint, that has not yet got
-    as far): compared on the first kept time series that OUT holds too."""
+    as far): compared on the first kept time series that OUT holds too. A kept run of another
+    source than OUT's (both known) is another result, and never hides OUT's."""
     kept = os.path.join(RESULTS, name)
+    if different_sources(kept, out):
+        return False
     for path in sorted(glob.glob(os.path.join(kept, "**", "*.csv.gz"), recursive=True)):
         own = os.path.join(out, os.path.relpath(path, kept)[:-len(".gz")])
         if not os.path.exists(own):
@@ -160,6 +165,19 @@ def kept_reaches_farther(out, name):
         if kept_end is not None and own_end is not None:
             return kept_end > own_end
     return False
+
+
+def different_sources(kept, out):
+    """Whether the kept run in KEPT and the run in OUT name different sources they were built
+    from (False where either does not say)."""
+    kept_statistics = os.path.join(kept, "statistics.json")
+    if not os.path.exists(kept_statistics):
+        return False
+    with open(kept_statistics) as f:
+        kept_source = json.load(f).get("source_revision")
+    own = run_statistics(out)
+    own_source = own["source_revision"] if own else None
+    return kept_source is not None and own_source is not None and kept_source != own_source
 
 
 def result_path(out, name, filename):

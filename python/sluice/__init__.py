@@ -9,6 +9,8 @@
 
 docs/python.md describes every call.
 """
-from ._sluice import Case, DivergenceError, InputError, Simulation, compare, sweep
+from ._sluice import (Case, DivergenceError, InputError, Simulation, __version__, compare,
+                      source_revision, sweep)
 
-__all__ = ["Case", "DivergenceError", "InputError", "Simulation", "compare", "sweep"]
+__all__ = ["Case", "DivergenceError", "InputError", "Simulation", "__version__", "compare",
+           "source_revision", "sweep"]

@@ -4,6 +4,11 @@ from typing import Any, Callable, Optional, Sequence, Union
 
 import numpy.typing as npt
 
+__version__: str
+"""The release, as `sluice --version` gives it."""
+source_revision: str
+"""`git describe --always --dirty` of the source the module was built from, or "unknown"."""
+
 class InputError(ValueError):
     """Bad input, naming the file, line and key (its attributes)."""
     file: str

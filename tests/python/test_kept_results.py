@@ -1,5 +1,7 @@
 """validation/runs.py's kept results: a run that has not got as far as its kept copy (begun
-again, or resumed from an earlier checkpoint) neither replaces nor hides that copy."""
+again, or resumed from an earlier checkpoint) neither replaces nor hides that copy. A run of
+another source (`sluice --stats` names it) is another result: a kept copy never hides it."""
+import json
 import os
 import sys
 
@@ -68,3 +70,31 @@ def test_the_statistics_follow_the_files_they_belong_to(tmp_path, results):
     with open(os.path.join(run, "stats_leg_0.json"), "w") as f:
         f.write(str(dict(leg, steps=500, simulated_seconds=0.5)).replace("'", '"'))
     assert runs.result_statistics(run, "f3/mac")["steps"] == 2000
+
+
+def write_statistics(run, source, end):
+    leg = {"steps": 10, "wall_seconds": 1.0, "simulated_seconds": end, "threads": 1}
+    if source is not None:
+        leg["source_revision"] = source
+    with open(os.path.join(run, "stats.json"), "w") as f:
+        json.dump(leg, f)
+
+
+def test_a_run_of_another_source_is_not_hidden_by_the_kept_copy(tmp_path, results):
+    run = str(tmp_path / "run")
+    write_probes(run, 2.0)
+    write_statistics(run, "aaaaaaaaaaaa", 2.0)
+    runs.keep_results(run, "f3/mac")
+    write_probes(run, 0.5)
+    write_statistics(run, "bbbbbbbbbbbb", 0.5)
+    assert runs.result_path(run, "f3/mac", "probes.csv") == os.path.join(run, "probes.csv")
+    runs.keep_results(run, "f3/mac")
+    assert kept_end(results, "f3/mac") == pytest.approx(0.5)
+    # Of the same source, or where either does not say, the kept copy that reaches further wins.
+    for source in ("bbbbbbbbbbbb", None):
+        write_probes(run, 2.0)
+        write_statistics(run, "bbbbbbbbbbbb", 2.0)
+        runs.keep_results(run, "f3/mac")
+        write_probes(run, 0.5)
+        write_statistics(run, source, 0.5)
+        assert runs.last_time(runs.result_path(run, "f3/mac", "probes.csv")) == pytest.approx(2.0)

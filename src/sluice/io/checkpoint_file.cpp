@@ -38,10 +38,6 @@ T read_raw(std::string_view bytes, std::size_t at) {
 
 }  // namespace
 
-std::string sluice_version() {
-  return SLUICE_VERSION;
-}
-
 std::uint32_t crc32_of(std::string_view bytes) {
   uLong crc = crc32(0L, Z_NULL, 0);
   // zlib takes at most 4 GiB at a time.

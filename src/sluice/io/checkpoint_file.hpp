@@ -40,8 +40,6 @@ struct Checkpoint {
   std::string state;
 };
 
-// This build's version (the project's), as checkpoints record it.
-std::string sluice_version();
 // CRC-32 (zlib) of some bytes.
 std::uint32_t crc32_of(std::string_view bytes);
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "sluice/core/build_info.hpp"
 #include "sluice/core/errors.hpp"
 
 namespace sluice {
@@ -121,7 +122,7 @@ void CheckpointFolder::write(const io::CheckpointHeader& header, std::string_vie
 
 io::CheckpointHeader checkpoint_header(const io::CaseConfig& config, int dimension) {
   io::CheckpointHeader h;
-  h.sluice_version = io::sluice_version();
+  h.sluice_version = sluice_version();
   h.case_name = config.name;
   h.model = config.has_fluid() ? config.model_name : "bodies-alone";
   h.dimension = dimension;

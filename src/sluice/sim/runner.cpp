@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "sluice/core/build_info.hpp"
 #include "sluice/io/vtk_writer.hpp"
 #include "sluice/sim/case_run.hpp"
 #include "sluice/sim/simulation.hpp"
@@ -66,7 +67,8 @@ std::string stats_json(const RunSummary& r) {
   const double fluid_rate =
       r.wall_seconds > 0 ? static_cast<double>(r.fluid_particles) * r.steps / r.wall_seconds : 0;
   return fmt::format(
-      "{{\n  \"element_name\": \"{}\",\n  \"particles\": {},\n  \"fluid_particles\": {},\n"
+      "{{\n  \"sluice_version\": \"{}\",\n  \"source_revision\": \"{}\",\n"
+      "  \"element_name\": \"{}\",\n  \"particles\": {},\n  \"fluid_particles\": {},\n"
       "  \"steps\": {},\n  \"last_step\": {},\n"
       "  \"simulated_seconds\": {:.9g},\n  \"start_seconds\": {:.9g},\n"
       "  \"wall_seconds\": {:.6f},\n  \"threads\": {},\n  \"ranks\": {},\n"
@@ -79,8 +81,9 @@ std::string stats_json(const RunSummary& r) {
       "  \"velocity_solves\": {{{}}},\n"
       "  \"fluid_counters\": {{{}}},\n  \"final_probes\": {{{}}},\n"
       "  \"stage_seconds\": {{\n{}\n  }}\n}}\n",
-      r.element_name, r.particles, r.fluid_particles, r.steps, r.last_step, r.simulated_time,
-      r.start_time, r.wall_seconds, r.threads, r.ranks, r.particle_steps_per_second(), fluid_rate,
+      sluice_version(), source_revision(), r.element_name, r.particles, r.fluid_particles, r.steps,
+      r.last_step, r.simulated_time, r.start_time, r.wall_seconds, r.threads, r.ranks,
+      r.particle_steps_per_second(), fluid_rate,
       r.simulated_time > r.start_time ? r.wall_seconds / (r.simulated_time - r.start_time) : 0,
       r.frames, r.checkpoints, r.bodies, r.solid_substeps,
       r.steps > 0 ? double(r.solid_substeps) / r.steps : 0, r.most_substeps_per_step,

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "sluice/core/build_info.hpp"
 #include "support/scratch_dir.hpp"
 
 namespace sluice::io {
