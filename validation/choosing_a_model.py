@@ -85,7 +85,7 @@ def b5_cells(model, prefix):
     if model == "mac":
         prescribed, prescribed_wall = b5_cells("mac-prescribed", prefix)
         return (f"{' / '.join(drags)}; every part prescribed: {prescribed}",
-                f"{prescribed_wall} (prescribed)")
+                wall if wall != "–" else f"{prescribed_wall} (prescribed)")
     return " / ".join(drags), wall
 
 
