@@ -25,7 +25,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from runs import (keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, write_table)
 
 DIAMETER = 0.1
 # Schäfer & Turek's ranges.
@@ -80,15 +80,16 @@ def figures(model, benchmark, out, name):
             "St": DIAMETER / (period * speed)}
 
 
-def main():
-    parser = model_runs_parser(
-        "cylinder_channel_2d", __doc__.split("\n")[0],
-        "mac:2d1@0.01,mac:2d1@0.005,mac:2d1@0.0025,mac:2d2@0.01,mac:2d2@0.005,"
+RUNS = ("mac:2d1@0.01,mac:2d1@0.005,mac:2d1@0.0025,mac:2d2@0.01,mac:2d2@0.005,"
         "wcsph:2d1@0.01,wcsph:2d1@0.005,wcsph:2d2@0.01,wcsph:2d2@0.005")
+
+
+def main():
+    parser = model_runs_parser("cylinder_channel_2d", __doc__.split("\n")[0], RUNS)
     parser.set_defaults(out=os.path.join("out", "validation", "cylinder_channel"))
     args = parser.parse_args()
     results = {"2d1": [], "2d2": []}
-    for item in args.runs.split(","):
+    for item in runs_to_tabulate(args.runs, RUNS):
         model, rest = item.split(":")
         benchmark, spacing = rest.split("@")
         spacing = float(spacing)
@@ -96,7 +97,7 @@ def main():
         _, end, _, extra = benchmarks[benchmark]
         name = f"f7_{model}_{benchmark}_{spacing:g}"
         out = os.path.join(args.out, name)
-        if not args.no_run:
+        if not args.no_run and item in args.runs.split(","):
             run_model(case, out, settings, spacing, end, args, extra)
             keep_results(out, name, ("loads.csv", "probes.csv"))
         statistics = result_statistics(out, name) or {}

@@ -20,8 +20,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from probes_csv import read_probe
-from runs import (ROOT, each_run, keep_results, result_path, result_statistics, save_figure,
-                  write_table)
+from runs import (ROOT, each_run, keep_results, result_path, result_statistics, runs_to_tabulate,
+                  save_figure, write_table)
 
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 REFERENCE = os.path.join(ROOT, "validation", "data", "dam_break_front_koshizuka_oka_1996.tsv")
@@ -103,9 +103,10 @@ def main():
     lines = ["| model | spacing [m] | (a) RMS as measured [m] | (b) RMS, experiment delayed "
              "[m] | fitted delay [s] | wall s per simulated s |", "|---|---|---|---|---|---|"]
     coarse = {}
-    for model, spacing in each_run(args.runs):
+    for item in runs_to_tabulate(args.runs, RUNS):
+        [(model, spacing)] = each_run(item)
         out = out_dir(model, spacing)
-        if not args.no_run:
+        if not args.no_run and item in args.runs.split(","):
             run(model, spacing)
             keep_results(out, kept_name(model, spacing))
         path = probes_path(model, spacing)

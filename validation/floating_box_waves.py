@@ -21,7 +21,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from runs import (each_run, keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, write_table)
 from wave_flume import goda_suzuki, harmonic, wave
 
 CASE = "floating_box_waves_2d"
@@ -66,15 +66,19 @@ def figures(out, name):
             "gauge": probes["half_wavelength [m]"] - DEPTH}
 
 
+RUNS = "mac@0.04,mac@0.02,wcsph@0.02"
+
+
 def main():
-    parser = model_runs_parser(CASE, __doc__.split("\n")[0], "mac@0.04,mac@0.02,wcsph@0.02")
+    parser = model_runs_parser(CASE, __doc__.split("\n")[0], RUNS)
     args = parser.parse_args()
     bare, bracketed = predicted_response(), predicted_response(ADDED_MASS_DEPTH)
     rows = []
-    for model, spacing in each_run(args.runs):
+    for item in runs_to_tabulate(args.runs, RUNS):
+        [(model, spacing)] = each_run(item)
         name = f"f11_{model}_{spacing:g}"
         out = os.path.join(args.out, name)
-        if not args.no_run:
+        if not args.no_run and item in args.runs.split(","):
             run_model(CASE, out, model, spacing, END, args, [f"output_interval={END / 4:g}"])
             keep_results(out, name, ("probes.csv", os.path.join("bodies", "box.csv")))
         rows.append((model, spacing, figures(out, name), result_statistics(out, name) or {}))

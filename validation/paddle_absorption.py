@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from runs import (case_parser, keep_results, read_columns, result_path, result_statistics,
-                  run_model, save_figure, write_table)
+                  run_model, runs_to_tabulate, save_figure, write_table)
 from wave_flume import goda_suzuki, harmonic
 
 CASE = "paddle_absorption_2d"
@@ -50,16 +50,19 @@ def windows(out, name):
     return np.array(rows)
 
 
+RUNS = "mac@piston,wcsph@piston,mac@flap"
+
+
 def main():
     parser = case_parser(CASE, __doc__.split("\n")[0])
     parser.set_defaults(out=os.path.join("out", "validation", CASE))
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--resume", action="store_true")
-    parser.add_argument("--runs", default="mac@piston,wcsph@piston,mac@flap",
+    parser.add_argument("--runs", default=RUNS,
                         help="MODEL@PADDLE,... to run")
     args = parser.parse_args()
     results = []
-    for item in args.runs.split(","):
+    for item in runs_to_tabulate(args.runs, RUNS):
         model, paddle = item.split("@")
         for absorbing in (True, False):
             name = "f8_absorption_" + ("on" if absorbing else "off")
@@ -69,7 +72,7 @@ def main():
             sets = [f"bodies.0.prescribed.active_absorption={str(absorbing).lower()}"]
             if paddle != "piston":
                 sets += [f"bodies.0.prescribed.paddle={paddle}", "bodies.0.prescribed.order=1"]
-            if not args.no_run:
+            if not args.no_run and item in args.runs.split(","):
                 run_model(CASE, out, model, 0.02, END, args, sets)
                 keep_results(out, name)
             results.append((f"{model}, {paddle}", absorbing, windows(out, name),

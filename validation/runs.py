@@ -50,6 +50,15 @@ def model_runs_parser(case, description, runs):
     return parser
 
 
+def runs_to_tabulate(requested, default):
+    """The runs (MODEL@SPACING or a script's own items) a script's table holds: every one of its
+    default runs, then any requested one that is not among them. A script runs the requested
+    ones alone and reads the others from their output or their kept results, so that running
+    some of its runs never drops the others' rows from its table."""
+    items = default.split(",")
+    return items + [item for item in requested.split(",") if item not in items]
+
+
 def each_run(runs):
     """(model, spacing) for each MODEL@SPACING of the comma-separated runs."""
     for item in runs.split(","):

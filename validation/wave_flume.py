@@ -24,7 +24,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from runs import (keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, write_table)
 
 CASE = "wave_flume_2d"
 G, DEPTH, FACE, STEEPNESS = 9.81, 0.5, 0.2, 0.02
@@ -124,13 +124,15 @@ def jonswap_figures(out, name, end, repeat):
             "f": f, "density": band * 2 * dt / len(eta)}
 
 
+RUNS = ("piston@1@0.02,piston@0.5@0.02,piston@2@0.01,flap@1@0.02,jonswap@1@0.02,"
+        "flap@0.5@0.02,flap@2@0.01,piston@1@0.02@wcsph")
+
+
 def main():
-    runs = ("piston@1@0.02,piston@0.5@0.02,piston@2@0.01,flap@1@0.02,jonswap@1@0.02,"
-            "flap@0.5@0.02,flap@2@0.01,piston@1@0.02@wcsph")
-    parser = model_runs_parser(CASE, __doc__.split("\n")[0], runs)
+    parser = model_runs_parser(CASE, __doc__.split("\n")[0], RUNS)
     args = parser.parse_args()
     regular, irregular = [], []
-    for item in args.runs.split(","):
+    for item in runs_to_tabulate(args.runs, RUNS):
         paddle, kh, spacing, *rest = item.split("@")
         model = rest[0] if rest else "mac"
         kh, spacing = float(kh), float(spacing)
@@ -140,7 +142,7 @@ def main():
             sets, end, repeat = jonswap_settings(spacing)
         else:
             sets, end = regular_settings(paddle, kh, spacing)
-        if not args.no_run:
+        if not args.no_run and item in args.runs.split(","):
             run_model(CASE, out, model, spacing, end, args, sets)
             keep_results(out, name, ("probes.csv",))
         statistics = result_statistics(out, name) or {}

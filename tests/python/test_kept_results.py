@@ -98,3 +98,9 @@ def test_a_run_of_another_source_is_not_hidden_by_the_kept_copy(tmp_path, result
         write_probes(run, 0.5)
         write_statistics(run, source, 0.5)
         assert runs.last_time(runs.result_path(run, "f3/mac", "probes.csv")) == pytest.approx(2.0)
+
+
+def test_a_table_keeps_every_default_run_when_some_are_run():
+    default = "mac@0.04,mac@0.02,wcsph@0.02"
+    assert runs.runs_to_tabulate("mac@0.04", default) == default.split(",")
+    assert runs.runs_to_tabulate("mps@0.02,mac@0.02", default) == default.split(",") + ["mps@0.02"]
