@@ -6,7 +6,7 @@
 
 namespace sluice {
 
-// The release, as CMakeLists.txt's project() names it ("0.9.0"): checkpoints of another
+// The release, as CMakeLists.txt's project() names it ("0.1.0"): checkpoints of another
 // release are refused.
 std::string_view sluice_version();
 // `git describe --always --dirty` of the source tree the build was made from ("07b69f2f1c3a",
