@@ -4,6 +4,8 @@ import os
 import pytest
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+# The command line of the same build (ctest names it; by hand, the release build's).
+SLUICE = os.environ.get("SLUICE_EXECUTABLE", os.path.join(ROOT, "build", "release", "sluice"))
 
 
 def case_path(name):

@@ -9,9 +9,7 @@ import matplotlib.image
 import numpy as np
 import pytest
 import sluice
-from conftest import ROOT, case_path
-
-SLUICE = os.environ.get("SLUICE_EXECUTABLE", os.path.join(ROOT, "build", "release", "sluice"))
+from conftest import ROOT, SLUICE, case_path
 
 
 @pytest.fixture(scope="module")

@@ -7,7 +7,7 @@ import threading
 import numpy as np
 import pytest
 import sluice
-from conftest import ROOT, case_path
+from conftest import ROOT, SLUICE, case_path
 
 
 def test_steps_and_runs_to_a_time(small_dam_break, tmp_path):
@@ -84,9 +84,7 @@ def test_the_same_answer_as_the_command_line(small_dam_break, tmp_path):
     """The Python loop takes the command line's steps: the same probes.csv, to the digit."""
     sim = sluice.Simulation(small_dam_break, out=str(tmp_path / "python"), threads=1)
     sim.run(every=0.01, callback=lambda s: s.probes())
-    sluice_cli = os.environ.get("SLUICE_EXECUTABLE",
-                                os.path.join(ROOT, "build", "release", "sluice"))
-    subprocess.run([sluice_cli, "run", case_path("dam_break_2d"), "--set", "spacing=0.05",
+    subprocess.run([SLUICE, "run", case_path("dam_break_2d"), "--set", "spacing=0.05",
                     "--set", "end_time=0.1", "--threads", "1", "--out", str(tmp_path / "cli")],
                    check=True, capture_output=True)
     with open(tmp_path / "python" / "probes.csv") as a, open(tmp_path / "cli" / "probes.csv") as b:

@@ -6,9 +6,7 @@ import re
 import subprocess
 
 import sluice
-from conftest import ROOT, case_path
-
-SLUICE = os.environ.get("SLUICE_EXECUTABLE", os.path.join(ROOT, "build", "release", "sluice"))
+from conftest import ROOT, SLUICE, case_path
 
 
 def test_the_command_line_and_the_module_name_the_same_build():
