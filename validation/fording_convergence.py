@@ -49,6 +49,11 @@ COLOURS = {"wcsph": "tab:blue", "mps": "tab:red", "penalty-sph": "tab:orange",
 STYLES = {0.04: "-", 0.02: "--", 0.01: ":"}
 
 
+def base_model(model):
+    """The model a run name MODEL[+KEY=VALUE...] runs."""
+    return model.split("+")[0]
+
+
 def run_dir(args, model, spacing):
     return os.path.join(ROOT, f"{args.out}_{model}_{spacing:g}")
 
@@ -97,7 +102,8 @@ def spacing_table(results, spacing):
     lines = ["| model | reached [s] | mean drag [N] | peak drag [N] | mean lift [N] | peak lift "
              "[N] | wave at 2 / 3 / 4 m [mm] | steps | wall s per simulated s (threads) |",
              "|---|---|---|---|---|---|---|---|---|"]
-    for (model, s), f in sorted(results.items(), key=lambda item: MODELS.index(item[0][0])):
+    for (model, s), f in sorted(results.items(),
+                                key=lambda item: MODELS.index(base_model(item[0][0]))):
         if s != spacing:
             continue
         if f is None:
@@ -150,7 +156,7 @@ def plot(results):
             continue
         for ax, load in zip(axes, ("drag", "lift")):
             ax.plot(f["time"], f[f"{load}_series"], STYLES.get(spacing, "-"),
-                    color=COLOURS[model], lw=1.0, label=f"{model}, {spacing:g} m")
+                    color=COLOURS[base_model(model)], lw=1.0, label=f"{model}, {spacing:g} m")
     axes[0].set_ylabel("drag [N]")
     axes[1].set_ylabel("lift [N]")
     axes[1].set_xlabel("time [s]")

@@ -120,8 +120,9 @@ class MacModel : public FluidSystem,
   double last_good_time_ = 0;
   ProjectionReport last_projection_;
   double projections_ = 0, pressure_iterations_ = 0, unconverged_ = 0;
-  double releases_ = 0;  // projections made again with a contact let go
-  double restored_ = 0;  // water volume the volume correction gave back (negative: took)
+  double releases_ = 0;     // projections made again with a contact let go
+  double restored_ = 0;     // water volume the volume correction gave back (negative: took)
+  double held_volume_ = 0;  // the water the volume correction keeps (2D: area)
 };
 
 }  // namespace sluice
