@@ -112,7 +112,7 @@ TEST(MacFluid, VolumeCorrectionKeepsTheDamBreaksArea) {
 // A box 0.4 m wide pushed down at 0.5 m/s into water 0.5 m deep (cells of 0.025 m), to 0.6 s:
 // the water it displaces rises around it. Without the correction the grid's velocities carry
 // it there (its area changes by 0.1 %), and the correction must not take it away: the level
-// at x = 0.2 m, 5.6 cm up by then, within 5 mm (a fifth of a cell) of the uncorrected run's.
+// at x = 0.2 m, 6 cm up by then, within 5 mm (a fifth of a cell) of the uncorrected run's.
 // A target measured afresh each step lost the water of every cell the box covered (-8 % of
 // the area by 0.6 s, the level 5 cm short).
 TEST(MacFluid, VolumeCorrectionKeepsTheWaterABodySinksInto) {

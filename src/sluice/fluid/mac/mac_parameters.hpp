@@ -30,7 +30,7 @@ struct MacParameters {
   int reinitialise_every = 5;
   // The level set shifted after each step to keep its water (volume_correction.hpp). On by
   // default: without it the level set loses the water of every splash (F3: a fifth by 6 s; B5's
-  // vehicle: 9 % by 2 s, and a sixth of its drag with it).
+  // vehicle: 9 % by 2 s, and an eighth of its drag with it).
   bool volume_correction = true;
 };
 
