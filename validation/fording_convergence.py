@@ -22,8 +22,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from probes_csv import read_probe
-from runs import (ROOT, each_run, keep_results, model_runs_parser, result_path, result_statistics,
-                  run_model, save_figure, write_table)
+from runs import (ROOT, base_model, each_run, keep_results, model_runs_parser, result_path,
+                  result_statistics, run_model, save_figure, write_table)
 
 MODELS = ("wcsph", "mps", "penalty-sph", "constraint", "mac", "granular", "mac-prescribed")
 # `mac-prescribed` runs the grid with every part carried at the carriage's motion (the wheels do
@@ -47,11 +47,6 @@ COLOURS = {"wcsph": "tab:blue", "mps": "tab:red", "penalty-sph": "tab:orange",
            "constraint": "tab:purple", "granular": "tab:green", "mac": "tab:brown",
            "mac-prescribed": "tab:pink"}
 STYLES = {0.04: "-", 0.02: "--", 0.01: ":"}
-
-
-def base_model(model):
-    """The model a run name MODEL[+KEY=VALUE...] runs."""
-    return model.split("+")[0]
 
 
 def run_dir(args, model, spacing):

@@ -25,8 +25,8 @@ matplotlib.use("Agg")
 import kleefsman_figures as f3
 import matplotlib.pyplot as plt
 import numpy as np
-from runs import (ROOT, each_run, keep_results, model_runs_parser, open_text, result_path,
-                  result_statistics, run_model, save_figure, write_table)
+from runs import (ROOT, base_model, each_run, keep_results, model_runs_parser, open_text,
+                  result_path, result_statistics, run_model, save_figure, write_table)
 
 # Every model at 0.03 m; mac's cells must tile the 3.22 m x 1 m tank, so its coarse run is at
 # 0.02 m, the nearest that does; and without its volume correction, which it had not before
@@ -219,7 +219,7 @@ def main():
         out = run_dir(args, model, spacing)
         name = kept_name(model, spacing, args.variants)
         if run:
-            interval = PROBE_INTERVAL.get(model.split("+")[0])
+            interval = PROBE_INTERVAL.get(base_model(model))
             # A checkpoint every 0.1 s, not the case's 0.5 s: a run of hours stopped at a
             # session's end loses less (a resumed run may change the interval).
             extra = ("checkpoint_interval=0.1",)

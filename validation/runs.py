@@ -66,6 +66,11 @@ def each_run(runs):
         yield model, float(spacing)
 
 
+def base_model(model):
+    """The model a run name MODEL[+KEY=VALUE...] runs."""
+    return model.split("+")[0]
+
+
 def run_model(case, out, model, spacing, end, args, extra=()):
     """Runs cases/<case>.yaml into out with model MODEL[+KEY=VALUE...] (each KEY=VALUE sets
     model.KEY) at the particle spacing (the grid's cell size, for mac) to end seconds, with each
@@ -73,7 +78,7 @@ def run_model(case, out, model, spacing, end, args, extra=()):
     args.resume and a checkpoint in out it goes on from the newest. Each leg writes its
     statistics to out/stats_leg_N.json (wall_per_simulated_second adds them up); args.threads,
     where set, is the thread count. A run that diverges (exit 3) keeps what it wrote."""
-    name, *settings = model.split("+")
+    name, settings = base_model(model), model.split("+")[1:]
     command = [os.path.join(ROOT, args.sluice), "run", os.path.join(ROOT, "cases", f"{case}.yaml")]
     if args.resume and glob.glob(os.path.join(out, "checkpoints", "*.ckpt")):
         command += ["--resume", out]  # with the same --set values, which the checkpoint checks
