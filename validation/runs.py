@@ -79,6 +79,10 @@ def run_model(case, out, model, spacing, end, args, extra=()):
     statistics to out/stats_leg_N.json (wall_per_simulated_second adds them up); args.threads,
     where set, is the thread count. A run that diverges (exit 3) keeps what it wrote."""
     name, settings = base_model(model), model.split("+")[1:]
+    # sluice runs from the repository's root, the caller reads out from its own directory: a
+    # relative out must name the same place for both (read from elsewhere, the tables had
+    # quietly shown the kept results instead of the run just made).
+    out = os.path.abspath(out)
     command = [os.path.join(ROOT, args.sluice), "run", os.path.join(ROOT, "cases", f"{case}.yaml")]
     if args.resume and glob.glob(os.path.join(out, "checkpoints", "*.ckpt")):
         command += ["--resume", out]  # with the same --set values, which the checkpoint checks

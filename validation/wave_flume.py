@@ -153,7 +153,9 @@ def main():
                             statistics))
 
     def wall(s):
-        return f"{s['wall']:.0f} s ({s['threads']} threads)" if s else ""
+        if not s:
+            return ""
+        return f"{s['wall']:.0f} s ({s['threads']} thread{'' if s['threads'] == 1 else 's'})"
 
     lines = ["| model | paddle | kh | Ursell H L²/h³ | cells or spacing | target H [m] | "
              "crest to trough [m] | from target | incident, 1st harmonic [m] | from target | "
