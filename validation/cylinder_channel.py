@@ -25,7 +25,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from runs import (keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, runs_to_tabulate, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, wall_time,
+                  write_table)
 
 DIAMETER = 0.1
 # Schäfer & Turek's ranges.
@@ -111,7 +112,7 @@ def main():
                  "| Schäfer & Turek | | " + " | ".join(f"{lo:g}-{hi:g}" for lo, hi in
                                                        ranges.values()) + " | | |"]
         for model, spacing, f, s in results[benchmark]:
-            wall = f"{s['wall']:.0f} s ({s['threads']} threads)" if s else ""
+            wall = wall_time(s)
             lines.append(f"| `{model}` | {DIAMETER / spacing:.0f} | " +
                          " | ".join(fmt.format(f[key]) for key, fmt in zip(ranges, formats)) +
                          f" | {s.get('steps', '')} | {wall} |")

@@ -21,7 +21,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from runs import (each_run, keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, runs_to_tabulate, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, wall_time,
+                  write_table)
 from wave_flume import goda_suzuki, harmonic, wave
 
 CASE = "floating_box_waves_2d"
@@ -87,7 +88,7 @@ def main():
              f"response | from {bare:.3f} (no added mass) | from {bracketed:.3f} (added mass) | "
              "mean draft [m] (0.1) | steps | wall time |", "|---" * 11 + "|"]
     for model, spacing, f, s in rows:
-        wall = f"{s['wall']:.0f} s ({s['threads']} threads)" if s else ""
+        wall = wall_time(s)
         if f is None:
             lines.append(f"| `{model}` | {spacing:g} m | did not reach {END:g} s | | | | | | | | |")
             continue

@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from runs import (case_parser, keep_results, read_columns, result_path, result_statistics,
-                  run_model, runs_to_tabulate, save_figure, write_table)
+                  run_model, runs_to_tabulate, save_figure, wall_time, write_table)
 from wave_flume import goda_suzuki, harmonic
 
 CASE = "paddle_absorption_2d"
@@ -84,7 +84,7 @@ def main():
     for model, absorbing, w, s in results:
         early = w[(w[:, 0] > 14 + 1.5 * PERIOD) & (w[:, 0] < 22 - 1.5 * PERIOD)]
         mean_early = early[:, 1].mean()
-        wall = f"{s['wall']:.0f} s ({s['threads']} threads)" if s else ""
+        wall = wall_time(s)
         lines.append(f"| {model} | {'yes' if absorbing else 'no'} | {mean_early:.4f} | "
                      f"{100 * (mean_early / HEIGHT - 1):+.1f} % | {w[-1, 1]:.4f} | "
                      f"{100 * (w[-1, 1] / HEIGHT - 1):+.1f} % | {w[-1, 2]:.2f} | "

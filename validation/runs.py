@@ -219,6 +219,14 @@ def result_statistics(out, name):
     return statistics
 
 
+def wall_time(statistics):
+    """A table's wall-time cell from result_statistics: "235 s (1 thread)", or "" without."""
+    if not statistics:
+        return ""
+    threads = statistics["threads"]
+    return f"{statistics['wall']:.0f} s ({threads} thread{'' if threads == 1 else 's'})"
+
+
 def open_text(path):
     """A text file for reading, gzipped or not (by its name)."""
     return gzip.open(path, "rt") if path.endswith(".gz") else open(path)

@@ -24,7 +24,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from runs import (keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, runs_to_tabulate, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, wall_time,
+                  write_table)
 
 CASE = "wave_flume_2d"
 G, DEPTH, FACE, STEEPNESS = 9.81, 0.5, 0.2, 0.02
@@ -152,11 +153,6 @@ def main():
             regular.append((paddle, kh, spacing, model, regular_figures(out, name, kh, end),
                             statistics))
 
-    def wall(s):
-        if not s:
-            return ""
-        return f"{s['wall']:.0f} s ({s['threads']} thread{'' if s['threads'] == 1 else 's'})"
-
     lines = ["| model | paddle | kh | Ursell H L²/h³ | cells or spacing | target H [m] | "
              "crest to trough [m] | from target | incident, 1st harmonic [m] | from target | "
              "reflection | steps | wall time |", "|---" * 13 + "|"]
@@ -171,14 +167,14 @@ def main():
                      f"{f['height']:.4f} | {100 * (f['height'] / f['target'] - 1):+.1f} % | "
                      f"{f['first_harmonic']:.4f} | "
                      f"{100 * (f['first_harmonic'] / f['target'] - 1):+.1f} % | "
-                     f"{100 * f['reflection']:.1f} % | {s.get('steps', '')} | {wall(s)} |")
+                     f"{100 * f['reflection']:.1f} % | {s.get('steps', '')} | {wall_time(s)} |")
     write_table("validation.md", "f8-regular", "\n".join(lines))
     lines = ["| cells | H_m0 [m] (target 0.04) | from target | T_p [s] (target 1.6) | from target "
              "| steps | wall time |", "|---" * 7 + "|"]
     for spacing, f, s in irregular:
         lines.append(f"| {spacing:g} m | {f['hm0']:.4f} | {100 * (f['hm0'] / 0.04 - 1):+.1f} % | "
                      f"{f['tp']:.3f} | {100 * (f['tp'] / 1.6 - 1):+.1f} % | {s.get('steps', '')} "
-                     f"| {wall(s)} |")
+                     f"| {wall_time(s)} |")
     write_table("validation.md", "f8-jonswap", "\n".join(lines))
 
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.8))
