@@ -1,6 +1,6 @@
 // Solid sub-cycling (VALIDATION.md C6), no fluid: against the same run at the solid step
-// throughout, through the multibody system directly (C1-C5 and C7 run from case files in
-// test_body_cases.cpp).
+// throughout, through the multibody system directly (C1, C3-C5 and C7 run from case files in
+// test_contact_cases.cpp, C2 in test_bodies_in_water.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
