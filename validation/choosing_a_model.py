@@ -81,7 +81,7 @@ def b5_cells(model, prefix):
             continue
         drags.append(f"{f['mean_drag']:.0f}")
         if spacing == fording_convergence.SPACINGS[0]:
-            wall = f"{f['wall']:.0f}"
+            wall = f["wall_alone"]
     if model == "mac":
         prescribed, prescribed_wall = b5_cells("mac-prescribed", prefix)
         return (f"{' / '.join(drags)}; every part prescribed: {prescribed}",

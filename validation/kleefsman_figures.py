@@ -82,6 +82,15 @@ def first_crossing(t, v, level, after=0.0):
     return float(t[k - 1] + (level - v[k - 1]) / (v[k] - v[k - 1]) * (t[k] - t[k - 1]))
 
 
+def read_every(series, interval):
+    """The series read at every multiple of interval [s] within its span (linear between its
+    samples), as a probe written every interval reads it: one reading, no mean, per interval."""
+    t = series["time"]
+    at = np.arange(np.ceil(t[0] / interval), np.floor(t[-1] / interval + 1e-9) + 1) * interval
+    return {name: at if name == "time" else np.interp(at, t, values)
+            for name, values in series.items()}
+
+
 def smoothed(series, name):
     """A sensor's series with the running mean, or a gauge's as it is."""
     t = series["time"]
@@ -112,7 +121,8 @@ def p1_impact(series):
 
 def figures(series, reference, span):
     """Every figure of F3 for one series (a run's or seed 000's) against the experiment: a dict
-    of first-wet times, gauge RMS, P1's rise, peak and impulse, P1-P4 RMS over span."""
+    of first-wet times, gauge RMS, P1's rise, peak and impulse, P1-P4 RMS over span. An event
+    after span, and the first impact's peak and impulse where span ends inside it, are nan."""
     out = {"span": span}
     t = series["time"]
     if "g496" in series:
@@ -121,11 +131,14 @@ def figures(series, reference, span):
         for gauge in GAUGES:
             out[f"rms_{gauge}"] = rms_against(series, gauge, reference, span)
     out["p1_rise"], out["p1_peak"], out["p1_impulse"] = p1_impact(series)
+    if span[1] < IMPACT[1]:
+        out["p1_peak"] = out["p1_impulse"] = float("nan")
     if "g2638" in series:
         out["bore"] = first_crossing(t, series["g2638"], BORE_HEIGHT, BORE_AFTER)
     out["p1_second_rise"] = first_crossing(t, running_mean(t, series["P1"]), RISE,
                                            SECOND_RISE_AFTER)
-    for key in ("bore", "p1_second_rise"):  # an event beyond the span is not the run's
+    events = [f"wet_{gauge}" for gauge in DOWNSTREAM] + ["p1_rise", "bore", "p1_second_rise"]
+    for key in events:  # an event beyond the span is not the run's
         if out.get(key, 0) > span[1]:
             out[key] = float("nan")
     for sensor in SENSORS[:4]:

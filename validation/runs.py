@@ -227,6 +227,21 @@ def wall_time(statistics):
     return f"{statistics['wall']:.0f} s ({threads} thread{'' if threads == 1 else 's'})"
 
 
+def wall_per_simulated(statistics, reached, threads=False):
+    """A table's cell for the wall seconds per simulated second of result_statistics: "1683",
+    with the thread count where asked, and the simulated seconds the rate covers where that is
+    less than the run reached (a leg stopped before it wrote its statistics is not in it):
+    "11966 (1; over 0.4 of 2.0 s)"; "–" without statistics."""
+    rate = statistics and statistics.get("wall_per_simulated_second")
+    if not rate:
+        return "–"
+    notes = [str(statistics["threads"])] if threads else []
+    covered = statistics["wall"] / rate
+    if covered < reached - 0.01:
+        notes.append(f"over {covered:.1f} of {reached:.1f} s")
+    return f"{rate:.0f}" + (f" ({'; '.join(notes)})" if notes else "")
+
+
 def open_text(path):
     """A text file for reading, gzipped or not (by its name)."""
     return gzip.open(path, "rt") if path.endswith(".gz") else open(path)
