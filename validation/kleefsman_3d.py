@@ -86,19 +86,27 @@ def table(results, experiment, end):
         "|---|---|---|---|---|---|---|---|---|---|---|",
         row("experiment (Kleefsman et al. 2005)", f3.figures(experiment, experiment, (0, end)),
             f"{end:g}")]
+    for name, series, span, wall in with_seed_rows(results):
+        if series is None:
+            lines.append(f"| {name} | not run | | | | | | | | | |")
+        elif wall is None:  # seed 000's
+            lines.append(row(name, f3.figures(series, experiment, span), f"{span[1]:g}"))
+        else:
+            lines.append(row(name, f3.figures(series, experiment, span), f"{span[1]:.2f}", wall))
+    return "\n".join(lines)
+
+
+def with_seed_rows(results):
+    """(name, series, span, wall cell) for each run of results, before the first run of each
+    spacing and span seed 000's MPS at that l0 over that span (its wall cell None) where the
+    seed has a run at it."""
     seeds_shown = set()
     for (model, spacing), (series, span, wall) in results.items():
         seed = f3.seed000(spacing)
         if seed is not None and (spacing, span) not in seeds_shown:
             seeds_shown.add((spacing, span))
-            lines.append(row(f"seed 000's MPS, l0 = {spacing:g} m",
-                             f3.figures(seed, experiment, span), f"{span[1]:g}"))
-        if series is None:
-            lines.append(f"| sluice `{model}`, {spacing:g} m | not run | | | | | | | | | |")
-            continue
-        lines.append(row(f"sluice `{model}`, {spacing:g} m", f3.figures(series, experiment, span),
-                         f"{span[1]:.2f}", wall))
-    return "\n".join(lines)
+            yield f"seed 000's MPS, l0 = {spacing:g} m", seed, span, None
+        yield f"sluice `{model}`, {spacing:g} m", series, span, wall
 
 
 READING = 0.01  # s, the probe interval of the models that write coarser probes
@@ -122,14 +130,8 @@ def readings_table(results, experiment):
         return (f"| {name} | {1000 * written:.1f} ms | {pressures[0]} | {pressures[1]} | "
                 f"{cell(read['p1_peak'], 1, 1e-3)} |")
 
-    seeds_shown = set()
-    for (model, spacing), (series, span, _) in results.items():
-        seed = f3.seed000(spacing)
-        if seed is not None and (spacing, span) not in seeds_shown:
-            seeds_shown.add((spacing, span))
-            lines.append(line(f"seed 000's MPS, l0 = {spacing:g} m, to {span[1]:g} s", seed, span))
-        if series is not None:
-            lines.append(line(f"sluice `{model}`, {spacing:g} m", series, span))
+    lines += [line(name + (f", to {span[1]:g} s" if wall is None else ""), series, span)
+              for name, series, span, wall in with_seed_rows(results) if series is not None]
     return "\n".join(lines)
 
 
