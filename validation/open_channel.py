@@ -24,7 +24,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 from frames import read_frame
 from runs import (each_run, keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, wall_time,
+                  write_table)
 
 CASE = "open_channel_2d"
 DEPTH, END, FROM = 0.3, 20.0, 10.0
@@ -72,17 +73,17 @@ def main():
     parser = model_runs_parser(CASE, __doc__, "wcsph@0.02,wcsph@0.01,mps@0.02")
     args = parser.parse_args()
     rows, results = [], []
-    for model, spacing in each_run(args.runs):
+    for item in runs_to_tabulate(args.runs, parser.get_default("runs")):
+        model, spacing = next(each_run(item))
         name = f"f9_{model}_{spacing:g}"
         out = os.path.join(args.out, name)
-        if not args.no_run:
+        if not args.no_run and item in args.runs.split(","):
             run_model(CASE, out, model, spacing, END, args)
             write_depths(out, spacing)
             keep_results(out, name, ("probes.csv", "depths.csv"))
         f = figures(out, name)
         statistics = result_statistics(out, name)
-        wall = (f"{statistics['wall']:.0f} s ({statistics['threads']} thread"
-                f"{'s' if statistics['threads'] > 1 else ''})" if statistics else "")
+        wall = wall_time(statistics)
         rows.append(f"| `{model}` | {spacing:g} | {f['in']:.5f} | {f['out']:.5f} | "
                     f"{f['imbalance']:+.2f} % | {f['depth']:.4f} ({f['depth_error']:+.2f} %) | "
                     f"{f['worst']:+.2f} % | {f['gauges']:.4f} | {wall} |")

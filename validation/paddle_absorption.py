@@ -78,12 +78,19 @@ def main():
             results.append((f"{model}, {paddle}", absorbing, windows(out, name),
                             result_statistics(out, name) or {}))
 
-    lines = ["| model, paddle | active absorption | incident H, 14-22 s [m] | from Biésel's 0.0628 | "
-             "incident H, last 3 periods [m] | from Biésel's | the wall's reflection, last 3 "
-             "periods | steps | wall time |", "|---" * 9 + "|"]
+    def within_14_to_22(w):  # the windows that lie within 14-22 s
+        return w[(w[:, 0] > 14 + 1.5 * PERIOD) & (w[:, 0] < 22 - 1.5 * PERIOD)]
+
+    def span(mids):  # the seconds a set of windows covers
+        return f"{mids.min() - 1.5 * PERIOD:.1f}-{mids.max() + 1.5 * PERIOD:.1f} s"
+
+    w = results[0][2]
+    early_span, last_span = span(within_14_to_22(w)[:, 0]), span(w[-1:, 0])
+    lines = [f"| model, paddle | active absorption | incident H, {early_span} [m] | from Biésel's "
+             f"0.0628 | incident H, last 3 periods ({last_span}) [m] | from Biésel's | the wall's "
+             "reflection, last 3 periods | steps | wall time |", "|---" * 9 + "|"]
     for model, absorbing, w, s in results:
-        early = w[(w[:, 0] > 14 + 1.5 * PERIOD) & (w[:, 0] < 22 - 1.5 * PERIOD)]
-        mean_early = early[:, 1].mean()
+        mean_early = within_14_to_22(w)[:, 1].mean()
         wall = wall_time(s)
         lines.append(f"| {model} | {'yes' if absorbing else 'no'} | {mean_early:.4f} | "
                      f"{100 * (mean_early / HEIGHT - 1):+.1f} % | {w[-1, 1]:.4f} | "

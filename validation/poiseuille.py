@@ -24,7 +24,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 from frames import read_frame, read_grid
 from runs import (each_run, keep_results, model_runs_parser, read_columns, result_path,
-                  result_statistics, run_model, save_figure, write_table)
+                  result_statistics, run_model, runs_to_tabulate, save_figure, wall_time,
+                  write_table)
 
 CASE = "poiseuille_2d"
 FORCE, NU, GAP = 0.8, 0.01, 0.1
@@ -87,17 +88,17 @@ def main():
                                "penalty-sph@0.0025,mac@0.005,mac@0.0025")
     args = parser.parse_args()
     rows, results = [], []
-    for model, spacing in each_run(args.runs):
+    for item in runs_to_tabulate(args.runs, parser.get_default("runs")):
+        model, spacing = next(each_run(item))
         name = f"f10_{model}_{spacing:g}"
         out = os.path.join(args.out, name)
-        if not args.no_run:
+        if not args.no_run and item in args.runs.split(","):
             run_model(CASE, out, model, spacing, END, args)
             write_profiles(out, model, spacing)
             keep_results(out, name, ("profiles.csv",))
         f = figures(out, name)
         statistics = result_statistics(out, name)
-        wall = (f"{statistics['wall']:.2g} s ({statistics['threads']} thread"
-                f"{'s' if statistics['threads'] > 1 else ''})" if statistics else "")
+        wall = wall_time(statistics)
         rows.append(f"| `{model}` | {spacing:g} | " + " | ".join(f"{r:.2f} %" for r in f["rms"]) +
                     f" | {f['mean']:+.2f} % | {f['ends']:+.3f} % | {wall} |")
         results.append((model, spacing, f))

@@ -186,16 +186,19 @@ def kept_reaches_farther(out, name):
 
 
 def different_sources(kept, out):
-    """Whether the kept run in KEPT and the run in OUT name different sources they were built
-    from (False where either does not say)."""
-    kept_statistics = os.path.join(kept, "statistics.json")
-    if not os.path.exists(kept_statistics):
-        return False
-    with open(kept_statistics) as f:
-        kept_source = json.load(f).get("source_revision")
+    """Whether the kept run in KEPT and the run in OUT were built from different sources: they
+    name different ones, or OUT names one and KEPT none (kept before the runs named theirs, so
+    from an older build). False where OUT names none."""
     own = run_statistics(out)
     own_source = own["source_revision"] if own else None
-    return kept_source is not None and own_source is not None and kept_source != own_source
+    if own_source is None:
+        return False
+    kept_statistics = os.path.join(kept, "statistics.json")
+    kept_source = None
+    if os.path.exists(kept_statistics):
+        with open(kept_statistics) as f:
+            kept_source = json.load(f).get("source_revision")
+    return kept_source != own_source
 
 
 def result_path(out, name, filename):
@@ -223,8 +226,9 @@ def wall_time(statistics):
     """A table's wall-time cell from result_statistics: "235 s (1 thread)", or "" without."""
     if not statistics:
         return ""
-    threads = statistics["threads"]
-    return f"{statistics['wall']:.0f} s ({threads} thread{'' if threads == 1 else 's'})"
+    threads, wall = statistics["threads"], statistics["wall"]
+    seconds = f"{wall:.2g}" if wall < 10 else f"{wall:.0f}"  # two figures at least
+    return f"{seconds} s ({threads} thread{'' if threads == 1 else 's'})"
 
 
 def wall_per_simulated(statistics, reached, threads=False):

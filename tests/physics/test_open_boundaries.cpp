@@ -25,7 +25,7 @@ constexpr double kPressureDropMiddle = 0.5 * (0.1172 + 0.1176);
 constexpr double kCoefficientPerNewton = 2 / (1.0 * 0.2 * 0.2 * 0.1);
 
 // 2D-1's figures, each a mean over the span from `from` to `end`: C_D, C_L and the pressure
-// drop from 0.05 m before the cylinder to 0.05 m behind it.
+// drop from the cylinder's front point to its back point (x = 0.15 and 0.25 m).
 struct Benchmark2D1 {
   double drag = 0, lift = 0, drop = 0;
 };
