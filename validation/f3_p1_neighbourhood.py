@@ -1,0 +1,57 @@
+"""What the fluid within reach of F3's sensor P1 is doing, frame by frame, in a particle model's
+run of cases/kleefsman_3d.yaml (issue 39: why `mps`'s P1 falls at 0.015 m): the fluid particles
+within r_e = 2.1 l0 of P1, their mean pressure, the share flagged as free surface, their mean
+number density / n0 (n0 from the first frame), the nearest one's distance from the obstacle's
+face in spacings and their mean speed; the wall particles in reach and their mean pressure; and
+the top of the water in a box 4 spacings wide in front of P1.
+
+    /usr/bin/python3 validation/f3_p1_neighbourhood.py RUN_DIR SPACING [FROM TO]
+
+RUN_DIR holds an `mps` run's .pvd and frames (which carry number_density and free_surface)."""
+import glob
+import os
+import re
+import sys
+
+import numpy as np
+
+from frames import read_frame
+
+P1 = np.array([0.8245, 0.529, 0.021])
+FACE_X = 0.8245
+
+
+def main():
+    run, spacing = sys.argv[1], float(sys.argv[2])
+    start, end = (float(sys.argv[3]), float(sys.argv[4])) if len(sys.argv) > 4 else (0, 1e9)
+    reach = 2.1 * spacing
+    with open(glob.glob(os.path.join(run, "*.pvd"))[0]) as f:
+        series = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', f.read())
+    fields = ("pressure", "kind", "velocity", "number_density", "free_surface")
+    _, first = read_frame(os.path.join(run, series[0][1]), "kind", "number_density")
+    n0 = np.median(first["number_density"][first["kind"] == 0])
+    for time, name in series:
+        time = float(time)
+        if not start <= time <= end:
+            continue
+        points, v = read_frame(os.path.join(run, name), *fields)
+        fluid = v["kind"] == 0
+        near = np.linalg.norm(points - P1, axis=1) < reach
+        mine, walls = near & fluid, near & ~fluid
+        box = fluid & (np.abs(points[:, 0] - FACE_X - 2 * spacing) < 2 * spacing) \
+            & (np.abs(points[:, 1] - P1[1]) < 2 * spacing)
+        top = points[box, 2].max() if box.any() else 0.0
+        if not mine.any():
+            print(f"t = {time:.3f} s: no fluid within reach of P1")
+            continue
+        surface = v["free_surface"][mine].mean()
+        density = v["number_density"][mine].mean() / n0
+        print(f"t = {time:.3f} s: {mine.sum():3d} fluid particles, p {v['pressure'][mine].mean():6.0f} Pa, "
+              f"surface {surface:.2f}, n/n0 {density:.3f}, nearest {(points[mine, 0] - FACE_X).min() / spacing:+.2f} "
+              f"spacings off the face, speed {np.linalg.norm(v['velocity'][mine], axis=1).mean():.2f} m/s; "
+              f"{walls.sum()} wall particles, p {v['pressure'][walls].mean() if walls.any() else 0:6.0f} Pa; "
+              f"water's top in front {top:.3f} m")
+
+
+if __name__ == "__main__":
+    main()
