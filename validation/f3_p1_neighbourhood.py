@@ -3,7 +3,10 @@ run of cases/kleefsman_3d.yaml (issue 39: why `mps`'s P1 falls at 0.015 m): the 
 within r_e = 2.1 l0 of P1, their mean pressure, the share flagged as free surface, their mean
 number density / n0 (n0 from the first frame), the nearest one's distance from the obstacle's
 face in spacings and their mean speed; the wall particles in reach and their mean pressure; and
-the top of the water in a box 4 spacings wide in front of P1.
+the top of the water in a box 4 spacings wide in front of P1; and, a spacing-free comparison
+between runs, in slices 0.05 m long and 0.1 m across centred on y = 0.529 m: the mean pressure
+under z = 0.05 m against the face (x 0.825-0.875 m), and the flow coming at it at x = 1 m (its
+mean x velocity under z = 0.1 m and the 90th percentile of its particles' heights).
 
     /usr/bin/python3 validation/f3_p1_neighbourhood.py RUN_DIR SPACING [FROM TO]
 
@@ -41,8 +44,17 @@ def main():
         box = fluid & (np.abs(points[:, 0] - FACE_X - 2 * spacing) < 2 * spacing) \
             & (np.abs(points[:, 1] - P1[1]) < 2 * spacing)
         top = points[box, 2].max() if box.any() else 0.0
+        def slice_at(x):
+            return fluid & (np.abs(points[:, 0] - x) < 0.025) & (np.abs(points[:, 1] - P1[1]) < 0.05)
+
+        against, coming = slice_at(FACE_X + 0.025), slice_at(1.0)
+        bed = against & (points[:, 2] < 0.05)
+        low = coming & (points[:, 2] < 0.1)
+        approach = (f"against the face: p under 0.05 m {v['pressure'][bed].mean() if bed.any() else 0:5.0f} Pa; "
+                    f"at x = 1 m: u_x {v['velocity'][low, 0].mean() if low.any() else 0:+.2f} m/s, "
+                    f"height {np.percentile(points[coming, 2], 90) if coming.any() else 0:.3f} m")
         if not mine.any():
-            print(f"t = {time:.3f} s: no fluid within reach of P1")
+            print(f"t = {time:.3f} s: no fluid within reach of P1; " + approach)
             continue
         surface = v["free_surface"][mine].mean()
         density = v["number_density"][mine].mean() / n0
@@ -50,7 +62,7 @@ def main():
               f"surface {surface:.2f}, n/n0 {density:.3f}, nearest {(points[mine, 0] - FACE_X).min() / spacing:+.2f} "
               f"spacings off the face, speed {np.linalg.norm(v['velocity'][mine], axis=1).mean():.2f} m/s; "
               f"{walls.sum()} wall particles, p {v['pressure'][walls].mean() if walls.any() else 0:6.0f} Pa; "
-              f"water's top in front {top:.3f} m")
+              f"water's top in front {top:.3f} m; " + approach)
 
 
 if __name__ == "__main__":
