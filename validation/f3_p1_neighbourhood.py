@@ -24,6 +24,15 @@ P1 = np.array([0.8245, 0.529, 0.021])
 FACE_X = 0.8245
 
 
+def mean_or_zero(values):
+    return values.mean() if values.size else 0.0
+
+
+def in_slice(points, fluid, x):
+    """The fluid in the slice 0.05 m long about x, 0.1 m across about P1's y."""
+    return fluid & (np.abs(points[:, 0] - x) < 0.025) & (np.abs(points[:, 1] - P1[1]) < 0.05)
+
+
 def main():
     run, spacing = sys.argv[1], float(sys.argv[2])
     start, end = (float(sys.argv[3]), float(sys.argv[4])) if len(sys.argv) > 4 else (0, 1e9)
@@ -44,14 +53,11 @@ def main():
         box = fluid & (np.abs(points[:, 0] - FACE_X - 2 * spacing) < 2 * spacing) \
             & (np.abs(points[:, 1] - P1[1]) < 2 * spacing)
         top = points[box, 2].max() if box.any() else 0.0
-        def slice_at(x):
-            return fluid & (np.abs(points[:, 0] - x) < 0.025) & (np.abs(points[:, 1] - P1[1]) < 0.05)
-
-        against, coming = slice_at(FACE_X + 0.025), slice_at(1.0)
+        against, coming = in_slice(points, fluid, FACE_X + 0.025), in_slice(points, fluid, 1.0)
         bed = against & (points[:, 2] < 0.05)
         low = coming & (points[:, 2] < 0.1)
-        approach = (f"against the face: p under 0.05 m {v['pressure'][bed].mean() if bed.any() else 0:5.0f} Pa; "
-                    f"at x = 1 m: u_x {v['velocity'][low, 0].mean() if low.any() else 0:+.2f} m/s, "
+        approach = (f"against the face: p under 0.05 m {mean_or_zero(v['pressure'][bed]):5.0f} Pa; "
+                    f"at x = 1 m: u_x {mean_or_zero(v['velocity'][low, 0]):+.2f} m/s, "
                     f"height {np.percentile(points[coming, 2], 90) if coming.any() else 0:.3f} m")
         if not mine.any():
             print(f"t = {time:.3f} s: no fluid within reach of P1; " + approach)
@@ -61,7 +67,7 @@ def main():
         print(f"t = {time:.3f} s: {mine.sum():3d} fluid particles, p {v['pressure'][mine].mean():6.0f} Pa, "
               f"surface {surface:.2f}, n/n0 {density:.3f}, nearest {(points[mine, 0] - FACE_X).min() / spacing:+.2f} "
               f"spacings off the face, speed {np.linalg.norm(v['velocity'][mine], axis=1).mean():.2f} m/s; "
-              f"{walls.sum()} wall particles, p {v['pressure'][walls].mean() if walls.any() else 0:6.0f} Pa; "
+              f"{walls.sum()} wall particles, p {mean_or_zero(v['pressure'][walls]):6.0f} Pa; "
               f"water's top in front {top:.3f} m; " + approach)
 
 
