@@ -6,7 +6,9 @@ face in spacings and their mean speed; the wall particles in reach and their mea
 the top of the water in a box 4 spacings wide in front of P1; and, a spacing-free comparison
 between runs, in slices 0.05 m long and 0.1 m across centred on y = 0.529 m: the mean pressure
 under z = 0.05 m against the face (x 0.825-0.875 m), and the flow coming at it at x = 1 m (its
-mean x velocity under z = 0.1 m and the 90th percentile of its particles' heights).
+mean x velocity under z = 0.1 m and the 90th percentile of its particles' heights). First, how far
+behind the face the obstacle's outermost wall layer lies, and in each frame how many fluid
+particles rest on the face's plane (within a hundredth of a spacing of it).
 
     /usr/bin/python3 validation/f3_p1_neighbourhood.py RUN_DIR SPACING [FROM TO]
 
@@ -42,6 +44,11 @@ def main():
     fields = ("pressure", "kind", "velocity", "number_density", "free_surface")
     _, first = read_frame(os.path.join(run, series[0][1]), "kind", "number_density")
     n0 = np.median(first["number_density"][first["kind"] == 0])
+    points, v = read_frame(os.path.join(run, series[0][1]), "kind")
+    obstacle = (v["kind"] != 0) & (points[:, 0] < FACE_X) & (points[:, 0] > 0.6635) \
+        & (np.abs(points[:, 1] - 0.4965) < 0.2015) & (points[:, 2] > 0) & (points[:, 2] < 0.161)
+    print(f"the obstacle's outermost wall layer: {(FACE_X - points[obstacle, 0].max()) / spacing:.2f} "
+          "spacings behind the face")
     for time, name in series:
         time = float(time)
         if not start <= time <= end:
@@ -55,8 +62,10 @@ def main():
         top = points[box, 2].max() if box.any() else 0.0
         against, coming = in_slice(points, fluid, FACE_X + 0.025), in_slice(points, fluid, 1.0)
         bed = against & (points[:, 2] < 0.05)
+        on_face = fluid & (np.abs(points[:, 0] - FACE_X) < 0.01 * spacing) \
+            & (np.abs(points[:, 1] - 0.4965) < 0.2015) & (points[:, 2] < 0.161)
         low = coming & (points[:, 2] < 0.1)
-        approach = (f"against the face: p under 0.05 m {mean_or_zero(v['pressure'][bed]):5.0f} Pa; "
+        approach = (f"{on_face.sum()} fluid particles on the face's plane; against the face: p under 0.05 m {mean_or_zero(v['pressure'][bed]):5.0f} Pa; "
                     f"at x = 1 m: u_x {mean_or_zero(v['velocity'][low, 0]):+.2f} m/s, "
                     f"height {np.percentile(points[coming, 2], 90) if coming.any() else 0:.3f} m")
         if not mine.any():
