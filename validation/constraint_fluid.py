@@ -16,7 +16,6 @@ import json
 import os
 import subprocess
 import sys
-import xml.etree.ElementTree as ElementTree
 
 import matplotlib
 
@@ -24,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from dam_break_2d import read_reference, rms_error
-from frames import read_frame
+from frames import frame_series, read_frame
 from probes_csv import read_probe
 from runs import ROOT, require, save_figure
 
@@ -58,15 +57,6 @@ def run(model, spacing, no_run):
         return out, json.load(f)
 
 
-def frames(out):
-    """(time, path) of each frame listed in the output's .pvd collection."""
-    pvd = [name for name in os.listdir(out) if name.endswith(".pvd")]
-    require(os.path.join(out, pvd[0] if pvd else "*.pvd"))
-    root = ElementTree.parse(os.path.join(out, pvd[0])).getroot()
-    return [(float(d.get("timestep")), os.path.join(out, d.get("file")))
-            for d in root.iter("DataSet")]
-
-
 def fluid_density_ratio(path):
     """rho / rho0 - 1 of the fluid particles (kind 0) of one .vtp frame."""
     _, fields = read_frame(path, "kind", "density")
@@ -77,7 +67,7 @@ def density_errors(out):
     """Per frame: time, the largest compression and the mean |rho / rho0 - 1| over the
     compressed particles (0 where none is compressed)."""
     rows = []
-    for t, path in frames(out):
+    for t, path in frame_series(out):
         error = fluid_density_ratio(path)
         compressed = error[error > 0]
         mean = float(np.abs(compressed).mean()) if len(compressed) else 0.0

@@ -13,17 +13,15 @@ particles rest on the face's plane (within a hundredth of a spacing of it).
     /usr/bin/python3 validation/f3_p1_neighbourhood.py RUN_DIR SPACING [FROM TO]
 
 RUN_DIR holds an `mps` run's .pvd and frames (which carry number_density and free_surface)."""
-import glob
-import os
-import re
 import sys
 
 import numpy as np
 
-from frames import read_frame
+from frames import frame_series, read_frame
 
 P1 = np.array([0.8245, 0.529, 0.021])
-FACE_X = 0.8245
+FACE_X = 0.8245  # the obstacle's face towards the water; the obstacle (the case's box wall):
+OBSTACLE_BACK_X, OBSTACLE_Y, OBSTACLE_HALF_WIDTH, OBSTACLE_TOP = 0.6635, 0.4965, 0.2015, 0.161
 
 
 def mean_or_zero(values):
@@ -39,21 +37,19 @@ def main():
     run, spacing = sys.argv[1], float(sys.argv[2])
     start, end = (float(sys.argv[3]), float(sys.argv[4])) if len(sys.argv) > 4 else (0, 1e9)
     reach = 2.1 * spacing
-    with open(glob.glob(os.path.join(run, "*.pvd"))[0]) as f:
-        series = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', f.read())
-    fields = ("pressure", "kind", "velocity", "number_density", "free_surface")
-    _, first = read_frame(os.path.join(run, series[0][1]), "kind", "number_density")
-    n0 = np.median(first["number_density"][first["kind"] == 0])
-    points, v = read_frame(os.path.join(run, series[0][1]), "kind")
-    obstacle = (v["kind"] != 0) & (points[:, 0] < FACE_X) & (points[:, 0] > 0.6635) \
-        & (np.abs(points[:, 1] - 0.4965) < 0.2015) & (points[:, 2] > 0) & (points[:, 2] < 0.161)
+    series = frame_series(run)
+    points, v = read_frame(series[0][1], "kind", "number_density")
+    n0 = np.median(v["number_density"][v["kind"] == 0])
+    across = np.abs(points[:, 1] - OBSTACLE_Y) < OBSTACLE_HALF_WIDTH
+    obstacle = (v["kind"] != 0) & (points[:, 0] < FACE_X) & (points[:, 0] > OBSTACLE_BACK_X) \
+        & across & (points[:, 2] > 0) & (points[:, 2] < OBSTACLE_TOP)
     print(f"the obstacle's outermost wall layer: {(FACE_X - points[obstacle, 0].max()) / spacing:.2f} "
           "spacings behind the face")
-    for time, name in series:
-        time = float(time)
+    fields = ("pressure", "kind", "velocity", "number_density", "free_surface")
+    for time, path in series:
         if not start <= time <= end:
             continue
-        points, v = read_frame(os.path.join(run, name), *fields)
+        points, v = read_frame(path, *fields)
         fluid = v["kind"] == 0
         near = np.linalg.norm(points - P1, axis=1) < reach
         mine, walls = near & fluid, near & ~fluid
@@ -63,7 +59,7 @@ def main():
         against, coming = in_slice(points, fluid, FACE_X + 0.025), in_slice(points, fluid, 1.0)
         bed = against & (points[:, 2] < 0.05)
         on_face = fluid & (np.abs(points[:, 0] - FACE_X) < 0.01 * spacing) \
-            & (np.abs(points[:, 1] - 0.4965) < 0.2015) & (points[:, 2] < 0.161)
+            & (np.abs(points[:, 1] - OBSTACLE_Y) < OBSTACLE_HALF_WIDTH) & (points[:, 2] < OBSTACLE_TOP)
         low = coming & (points[:, 2] < 0.1)
         approach = (f"{on_face.sum()} fluid particles on the face's plane; against the face: p under 0.05 m {mean_or_zero(v['pressure'][bed]):5.0f} Pa; "
                     f"at x = 1 m: u_x {mean_or_zero(v['velocity'][low, 0]):+.2f} m/s, "

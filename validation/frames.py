@@ -1,8 +1,23 @@
 """Reading one output frame (a .vtp file of sluice's series): its points and the point fields
-asked for, as numpy arrays; and the grid model's cells (a .vti file) alike."""
+asked for, as numpy arrays; and the grid model's cells (a .vti file) alike; and the frames a run's
+.pvd collection lists."""
+import os
+import xml.etree.ElementTree as ElementTree
+
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
+
+from runs import require
+
+
+def frame_series(out):
+    """(time, path) of each frame listed in the output's .pvd collection."""
+    pvd = [name for name in os.listdir(out) if name.endswith(".pvd")]
+    require(os.path.join(out, pvd[0] if pvd else "*.pvd"))
+    root = ElementTree.parse(os.path.join(out, pvd[0])).getroot()
+    return [(float(d.get("timestep")), os.path.join(out, d.get("file")))
+            for d in root.iter("DataSet")]
 
 
 def read_frame(path, *fields):
