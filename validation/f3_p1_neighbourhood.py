@@ -6,22 +6,30 @@ face in spacings and their mean speed; the wall particles in reach and their mea
 the top of the water in a box 4 spacings wide in front of P1; and, a spacing-free comparison
 between runs, in slices 0.05 m long and 0.1 m across centred on y = 0.529 m: the mean pressure
 under z = 0.05 m against the face (x 0.825-0.875 m), and the flow coming at it at x = 1 m (its
-mean x velocity under z = 0.1 m and the 90th percentile of its particles' heights). First, how far
+mean x velocity under z = 0.1 m and the 90th percentile of its particles' heights); and, 2 m
+from the obstacle, the reservoir's (x > 2.5 m): the mean pressure under z = 0.05 m against the
+weight of the water over it (rho g h, h the gauge at 2.638 m from the run's probes.csv), and the
+share of its fluid off the free surface whose pressure is clamped at zero, and that fluid's mean
+number density / n0. First, how far
 behind the face the obstacle's outermost wall layer lies, and in each frame how many fluid
 particles rest on the face's plane (within a hundredth of a spacing of it).
 
     /usr/bin/python3 validation/f3_p1_neighbourhood.py RUN_DIR SPACING [FROM TO]
 
 RUN_DIR holds an `mps` run's .pvd and frames (which carry number_density and free_surface)."""
+import os
 import sys
 
 import numpy as np
 
 from frames import frame_series, read_frame
+from kleefsman_figures import read_probes
 
 P1 = np.array([0.8245, 0.529, 0.021])
 FACE_X = 0.8245  # the obstacle's face towards the water; the obstacle (the case's box wall):
 OBSTACLE_BACK_X, OBSTACLE_Y, OBSTACLE_HALF_WIDTH, OBSTACLE_TOP = 0.6635, 0.4965, 0.2015, 0.161
+RESERVOIR_X = 2.5  # the water beyond it is the reservoir's, far from the obstacle
+RHO_G = 1000 * 9.81
 
 
 def mean_or_zero(values):
@@ -45,6 +53,7 @@ def main():
         & across & (points[:, 2] > 0) & (points[:, 2] < OBSTACLE_TOP)
     print(f"the obstacle's outermost wall layer: {(FACE_X - points[obstacle, 0].max()) / spacing:.2f} "
           "spacings behind the face")
+    probes = read_probes(os.path.join(run, "probes.csv"))
     fields = ("pressure", "kind", "velocity", "number_density", "free_surface")
     for time, path in series:
         if not start <= time <= end:
@@ -61,9 +70,15 @@ def main():
         on_face = fluid & (np.abs(points[:, 0] - FACE_X) < 0.01 * spacing) \
             & (np.abs(points[:, 1] - OBSTACLE_Y) < OBSTACLE_HALF_WIDTH) & (points[:, 2] < OBSTACLE_TOP)
         low = coming & (points[:, 2] < 0.1)
+        reservoir = fluid & (points[:, 0] > RESERVOIR_X)
+        weight = RHO_G * np.interp(time, probes["time"], probes["g2638"])
+        interior = reservoir & (v["free_surface"] == 0)
+        far = (f"; reservoir: p under 0.05 m {mean_or_zero(v['pressure'][reservoir & (points[:, 2] < 0.05)]):5.0f} Pa "
+               f"against rho g h {weight:5.0f} Pa, {mean_or_zero(v['pressure'][interior] <= 0):.3f} of it at p = 0, "
+               f"n/n0 {mean_or_zero(v['number_density'][interior]) / n0:.4f}")
         approach = (f"{on_face.sum()} fluid particles on the face's plane; against the face: p under 0.05 m {mean_or_zero(v['pressure'][bed]):5.0f} Pa; "
                     f"at x = 1 m: u_x {mean_or_zero(v['velocity'][low, 0]):+.2f} m/s, "
-                    f"height {np.percentile(points[coming, 2], 90) if coming.any() else 0:.3f} m")
+                    f"height {np.percentile(points[coming, 2], 90) if coming.any() else 0:.3f} m" + far)
         if not mine.any():
             print(f"t = {time:.3f} s: no fluid within reach of P1; " + approach)
             continue

@@ -35,7 +35,8 @@ std::vector<Vec<D>> sample_tank_walls(const AxisBox& inside,
                                       const std::vector<std::string>& open_sides, Real dx,
                                       int layers);
 
-// A solid box: the lattice points inside it within `layers` spacings of its surface.
+// A solid box: the lattice points inside it within `layers` spacings of its surface, laid from
+// each face so that every face has layers dx/2, 3dx/2, ... behind it.
 template <int D>
 std::vector<Vec<D>> sample_solid_box(const AxisBox& box, Real dx, int layers);
 

@@ -42,6 +42,36 @@ TEST(Sampling, SolidBoxKeepsOnlyTheLayersUnderItsSurface) {
   EXPECT_EQ(points.size(), 1000u - 6u * 6u * 6u);  // a 10^3 lattice less its 6^3 core
 }
 
+// Kleefsman's obstacle is 0.161 m long: 10.73 spacings of 0.015 m. Each face, upper ones too,
+// must have its outer layer dx/2 behind it, and no two particles may come closer than dx, also in
+// boxes too thin for two full sets of layers; a box under two spacings thick has one layer,
+// centred.
+TEST(Sampling, SolidBoxHasItsOuterLayerHalfASpacingBehindEveryFace) {
+  const double dx = 0.015;
+  for (const Vec3& size : {Vec3(0.161, 0.403, 0.161), Vec3(1.3 * dx, 2.7 * dx, 3.5 * dx)}) {
+    const AxisBox solid = box(Vec3(0.6635, 0.2955, 0), Vec3(0.6635, 0.2955, 0) + size);
+    const auto points = sample_solid_box<3>(solid, dx, 3);
+    ASSERT_FALSE(points.empty());
+    for (int a = 0; a < 3; ++a) {
+      double nearest_min = 1e300, nearest_max = 1e300;
+      for (const auto& p : points) {
+        nearest_min = std::min(nearest_min, p[a] - solid.min[a]);
+        nearest_max = std::min(nearest_max, solid.max[a] - p[a]);
+      }
+      const double expected = size[a] < 2 * dx ? 0.5 * size[a] : 0.5 * dx;
+      EXPECT_NEAR(nearest_min, expected, 1e-12) << "axis " << a;
+      EXPECT_NEAR(nearest_max, expected, 1e-12) << "axis " << a;
+    }
+    double closest = 1e300;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      for (std::size_t j = i + 1; j < points.size(); ++j) {
+        closest = std::min(closest, (points[i] - points[j]).norm());
+      }
+    }
+    EXPECT_GE(closest, dx - 1e-12);
+  }
+}
+
 TEST(Sampling, PlaneLayersLieBehindThePlane) {
   const double dx = 0.05;
   const Vec3 point(0, 0, 0.2), normal = Vec3(0.3, 0, 1).normalized();
