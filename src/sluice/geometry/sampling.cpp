@@ -63,9 +63,9 @@ void for_each_product(const std::array<std::vector<AxisCoordinate>, D>& axes, Fn
 std::vector<AxisCoordinate> face_aligned_coordinates(Real min, Real max, Real dx) {
   // Whole particle volumes only; the 1e-6 absorbs rounding of lengths that are multiples of dx.
   const long n = static_cast<long>(std::floor((max - min) / dx + 1e-6));
+  if (n == 1) return {{0.5 * (min + max), Band::kInside}};  // one layer: centred, not leaning
   const long from_min = (n + 1) / 2;
   std::vector<AxisCoordinate> out;
-  if (n == 1) return {{0.5 * (min + max), Band::kInside}};  // one layer: centred, not leaning
   for (long k = 0; k < from_min; ++k) out.push_back({min + (k + 0.5) * dx, Band::kInside});
   for (long k = n - from_min - 1; k >= 0; --k) out.push_back({max - (k + 0.5) * dx, Band::kInside});
   return out;
@@ -127,16 +127,14 @@ std::vector<Vec<D>> sample_solid_box(const AxisBox& box, Real dx, int layers) {
     lists[a] = face_aligned_coordinates(box.min[axes[a]], box.max[axes[a]], dx);
     if (lists[a].empty()) return {};
   }
-  std::vector<Vec<D>> lattice;
-  for_each_product<D>(lists, [&](const Vec<D>& p, const auto&) { lattice.push_back(p); });
   std::vector<Vec<D>> out;
-  for (const Vec<D>& p : lattice) {
+  for_each_product<D>(lists, [&](const Vec<D>& p, const auto&) {
     Real depth = 1e300;  // distance to the nearest face
     for (int a = 0; a < D; ++a) {
       depth = std::min({depth, p[a] - box.min[axes[a]], box.max[axes[a]] - p[a]});
     }
     if (depth < layers * dx) out.push_back(p);
-  }
+  });
   return out;
 }
 
