@@ -41,6 +41,17 @@ def in_slice(points, fluid, x):
     return fluid & (np.abs(points[:, 0] - x) < 0.025) & (np.abs(points[:, 1] - P1[1]) < 0.05)
 
 
+def reservoir_figures(points, v, fluid, n0, weight):
+    """The reservoir's part of a frame's line: its bottom pressure against the weight of the water
+    over it, and the share of its fluid off the surface at p = 0 and that fluid's n / n0."""
+    reservoir = fluid & (points[:, 0] > RESERVOIR_X)
+    bottom = reservoir & (points[:, 2] < 0.05)
+    interior = reservoir & (v["free_surface"] == 0)
+    return (f"; reservoir: p under 0.05 m {mean_or_zero(v['pressure'][bottom]):5.0f} Pa "
+            f"against rho g h {weight:5.0f} Pa, {mean_or_zero(v['pressure'][interior] <= 0):.3f} of it at p = 0, "
+            f"n/n0 {mean_or_zero(v['number_density'][interior]) / n0:.4f}")
+
+
 def main():
     run, spacing = sys.argv[1], float(sys.argv[2])
     start, end = (float(sys.argv[3]), float(sys.argv[4])) if len(sys.argv) > 4 else (0, 1e9)
@@ -70,12 +81,8 @@ def main():
         on_face = fluid & (np.abs(points[:, 0] - FACE_X) < 0.01 * spacing) \
             & (np.abs(points[:, 1] - OBSTACLE_Y) < OBSTACLE_HALF_WIDTH) & (points[:, 2] < OBSTACLE_TOP)
         low = coming & (points[:, 2] < 0.1)
-        reservoir = fluid & (points[:, 0] > RESERVOIR_X)
         weight = RHO_G * np.interp(time, probes["time"], probes["g2638"])
-        interior = reservoir & (v["free_surface"] == 0)
-        far = (f"; reservoir: p under 0.05 m {mean_or_zero(v['pressure'][reservoir & (points[:, 2] < 0.05)]):5.0f} Pa "
-               f"against rho g h {weight:5.0f} Pa, {mean_or_zero(v['pressure'][interior] <= 0):.3f} of it at p = 0, "
-               f"n/n0 {mean_or_zero(v['number_density'][interior]) / n0:.4f}")
+        far = reservoir_figures(points, v, fluid, n0, weight)
         approach = (f"{on_face.sum()} fluid particles on the face's plane; against the face: p under 0.05 m {mean_or_zero(v['pressure'][bed]):5.0f} Pa; "
                     f"at x = 1 m: u_x {mean_or_zero(v['velocity'][low, 0]):+.2f} m/s, "
                     f"height {np.percentile(points[coming, 2], 90) if coming.any() else 0:.3f} m" + far)

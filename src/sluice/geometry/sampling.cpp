@@ -56,13 +56,18 @@ void for_each_product(const std::array<std::vector<AxisCoordinate>, D>& axes, Fn
   }
 }
 
+// How many whole particle volumes of size dx fit in [min, max]; the 1e-6 absorbs rounding of
+// lengths that are multiples of dx.
+long whole_volumes(Real min, Real max, Real dx) {
+  return static_cast<long>(std::floor((max - min) / dx + 1e-6));
+}
+
 // Coordinates along one axis of a solid box, dx/2, 3dx/2, ... in from each face, the whole
 // particle volumes shared between the two faces and the remainder left in the middle (a gap of
 // dx to 2dx there). Every face thus has its outer layer half a spacing behind it, as a tank's
 // sides do; a lattice laid from one face would leave the other face's layer up to 1.5 dx back.
 std::vector<AxisCoordinate> face_aligned_coordinates(Real min, Real max, Real dx) {
-  // Whole particle volumes only; the 1e-6 absorbs rounding of lengths that are multiples of dx.
-  const long n = static_cast<long>(std::floor((max - min) / dx + 1e-6));
+  const long n = whole_volumes(min, max, dx);
   if (n == 1) return {{0.5 * (min + max), Band::kInside}};  // one layer: centred, not leaning
   const long from_min = (n + 1) / 2;
   std::vector<AxisCoordinate> out;
@@ -80,8 +85,7 @@ std::vector<Vec<D>> sample_box_volume(const AxisBox& box, Real dx) {
   constexpr auto axes = axes3<D>();
   for (int a = 0; a < D; ++a) {
     const Real lo = box.min[axes[a]], hi = box.max[axes[a]];
-    // Whole particle volumes only; the 1e-6 absorbs rounding of lengths that are multiples of dx.
-    const long n = static_cast<long>(std::floor((hi - lo) / dx + 1e-6));
+    const long n = whole_volumes(lo, hi, dx);
     for (long k = 0; k < n; ++k) coords[a].push_back(lo + (k + 0.5) * dx);
   }
   std::array<std::vector<AxisCoordinate>, D> lists;
