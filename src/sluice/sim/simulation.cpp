@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sluice/core/time_step.hpp"
+
 namespace sluice {
 
 template <int D>
@@ -54,10 +56,8 @@ TimeStep Simulation<D>::agreed(TimeStep step) {
 template <int D>
 void Simulation<D>::step(double until) {
   last_step_ = next_time_step();
-  double dt = last_step_.dt;
-  // Stretch or shorten the last steps slightly so that the run ends exactly at `until`.
-  const double remaining = until - clock_.time;
-  if (remaining < 1.5 * dt) dt = remaining <= dt * (1 + 1e-9) ? remaining : 0.5 * remaining;
+  // Equal steps that land exactly on `until` (an output's time or the end).
+  const double dt = step_towards(until - clock_.time, last_step_.dt);
   clock_.dt = dt;
   if (has_model()) bodies_->absorb_waves(clock_.time, fluid_->observation());
   for (std::size_t k = 0; k < stages_.size(); ++k) {
