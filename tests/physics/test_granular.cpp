@@ -187,8 +187,11 @@ void expect_runout(double a, double low, double high, int packings = 1) {
                          high);
 }
 
+// As the mean of six packings too: one packing's runout, 0.610 and 0.531 in the release and
+// baseline builds after a run's steps became equal between outputs (issue 39), lay 0.26 of that
+// spread from the band's low end.
 TEST(Granular, ColumnCollapseRunoutLowColumn) {
-  expect_runout(0.5, 0.85 * 0.6, 1.15 * 0.6);
+  expect_runout(0.5, 0.85 * 0.6, 1.15 * 0.6, 6);
 }
 
 TEST(Granular, ColumnCollapseRunoutTallColumn) {
