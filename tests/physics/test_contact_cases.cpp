@@ -170,7 +170,9 @@ TEST(CaseRestingCubes, StayPutForFiveSeconds) {
 // C5: elastic, frictionless spheres in a closed box without gravity: the total energy stays
 // within 1 % over at least 100 collisions. A collision is counted from the contact force of the
 // bodies: each body's contact starts count, so a sphere-sphere collision counts twice and the
-// test asks for 200 starts.
+// test asks for 200 starts. It runs for twice the case's end time: over the case's own, the
+// count (211 and 218 in the release and baseline builds) lay 1.6 of its spread between builds
+// above 200.
 TEST(CaseElasticBox, EnergyKeptOverHundredCollisions) {
   Simulation<3> sim(load_case("elastic_box.yaml"));
   const auto& bodies = sim.bodies();
@@ -178,7 +180,7 @@ TEST(CaseElasticBox, EnergyKeptOverHundredCollisions) {
   std::vector<bool> touching(bodies.count(), false);
   int starts = 0;
   double worst = 0;
-  run_until(sim, sim.config().end_time, [&](const StepClock&) {
+  run_until(sim, 2 * sim.config().end_time, [&](const StepClock&) {
     for (std::size_t b = 0; b < bodies.count(); ++b) {
       const bool now = bodies.system().contact_force()[b].norm() > 0;
       if (now && !touching[b]) ++starts;
