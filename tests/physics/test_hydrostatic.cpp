@@ -79,13 +79,19 @@ TEST(HydrostaticTank2D, MpsBottomPressureAveragedOverATenthOfASecond) {
   bottom.kind = io::ProbeKind::kPressure;
   bottom.point = Vec3(0.5, 0, 0);
   Probes probe({bottom}, "");
-  double sum = 0, sum2 = 0;
+  double sum = 0, sum2 = 0, speed2 = 0;
   long samples = 0;
   testing::run_until(sim, 2.0, [&](const StepClock& c) {
     if (c.time <= 1.9) return;
     const double p = probe.measure(sim.fluid().observation())[0];
     sum += p;
     sum2 += p * p;
+    const auto& ps = testing::particle_state(sim).particles;
+    double squares = 0;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      if (ps.is_fluid(i)) squares += ps.velocity[i].squaredNorm();
+    }
+    speed2 += squares / static_cast<double>(fluid);
     ++samples;
   });
   ASSERT_GT(samples, 10);
@@ -101,21 +107,29 @@ TEST(HydrostaticTank2D, MpsBottomPressureAveragedOverATenthOfASecond) {
     if (x[0] < 0 || x[0] > 1 || x[1] < 0) ++outside;
     fastest = std::max(fastest, s.particles.velocity[i].norm());
   }
-  const double expected = rho0 * g * depth;
+  const double expected = rho0 * g * depth, rms_speed = std::sqrt(speed2 / samples);
   std::printf(
       "F1 (mps): bottom pressure over 1.9-2.0 s %.5g Pa (rho g H %.5g, %+.2f %%), noise (std) "
-      "%.3g Pa (%.2f %%) over %ld steps, largest speed at 2 s %.4f m/s\n",
-      mean, expected, 100 * (mean / expected - 1), noise, 100 * noise / expected, samples, fastest);
+      "%.3g Pa (%.2f %%) over %ld steps, largest speed at 2 s %.4f m/s, RMS speed over 1.9-2.0 s "
+      "%.4f m/s\n",
+      mean, expected, 100 * (mean / expected - 1), noise, 100 * noise / expected, samples, fastest,
+      rms_speed);
   using testing::Bound;
   testing::expect_figure({"F1 `mps` bottom pressure against rho g H", "%", 2},
                          100 * (mean / expected - 1), Bound::within, 3);
   EXPECT_EQ(outside, 0u);
   EXPECT_EQ(s.particles.size(), particles);
   EXPECT_EQ(fluid_now, fluid);
-  // MPS's pressure noise keeps the particles jiggling (0.09-0.11 m/s at 2 s, depending on
-  // the build's rounding): this guards against a tank that comes apart, not against the noise.
-  testing::expect_figure({"F1 `mps` largest speed at 2 s", "m/s", 4}, fastest, Bound::below,
-                         0.1 * std::sqrt(g * depth));
+  // MPS's pressure noise keeps the particles jiggling (docs/validation.md, F1): the largest
+  // speed at 2 s, 3-6 % of sqrt(gH), which one particle's kick decides and the build's rounding
+  // moves by a factor of two, is reported against the suite's 1 % as a limit. What is asserted
+  // is the jiggling of the whole tank, its particles' RMS speed over the last tenth of a second,
+  // against three times what it is today: it guards against a tank that comes apart or a noise
+  // that grows, not against the noise itself.
+  testing::report_limit({"F1 `mps` largest speed at 2 s", "m/s", 4}, fastest, Bound::below,
+                        0.01 * std::sqrt(g * depth));
+  testing::expect_figure({"F1 `mps` RMS speed over 1.9-2.0 s", "m/s", 4}, rms_speed, Bound::below,
+                         0.03 * std::sqrt(g * depth));
 }
 
 // Water trapped under a lid (cases/lid_2d.yaml: a `box` wall 0.96 m wide with its underside at
