@@ -3,7 +3,8 @@
 Runs `sluice sweep` over Ks = 5e3, 5e4, 1e5 N/m for the three cases (rain on concrete, ratio
 0.20; water on concrete, 0.61; water on a granular bed, 4.902), writes the table of the share
 held back and the boundary forces beside the paper's shares into docs/validation.md (table b4),
-and draws docs/img/b4_penalty_study.png.
+and draws docs/img/b4_penalty_study.png. Each case's sweep summary is kept in
+validation/results/penalty_study/, which --no-run reads where the sweep's directory is gone.
 
 usage: /usr/bin/python3 validation/penalty_study.py [--no-run]
 """
@@ -16,7 +17,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-from runs import ROOT, save_figure, write_table
+from runs import ROOT, keep_results, open_text, result_path, save_figure, write_table
 
 SLUICE = os.path.join(ROOT, "build", "release", "sluice")
 STIFFNESSES = "5e3,5e4,1e5"
@@ -36,7 +37,13 @@ def sweep(case):
                         out, "--jobs", "1", "--set", "output_interval=5",
                         "--set", "model.Ks=" + STIFFNESSES],
                        check=True, stdout=subprocess.DEVNULL)
-    with open(os.path.join(out, "summary.csv")) as f:
+    name = os.path.join("penalty_study", case)
+    keep_results(out, name, ("summary.csv",))
+    path = result_path(out, name, "summary.csv")
+    if path is None:
+        sys.exit(f"penalty_study.py: no sweep of {case} in {out} and none kept: run without "
+                 "--no-run")
+    with open_text(path) as f:
         return [r for r in csv.DictReader(f) if r["status"] == "done"]
 
 
