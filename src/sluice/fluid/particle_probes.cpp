@@ -5,6 +5,7 @@
 
 #include "sluice/exec/policy.hpp"
 #include "sluice/fluid/particle_fluid.hpp"
+#include "sluice/fluid/water_column.hpp"
 #include "sluice/kernels/wendland_c2.hpp"
 
 namespace sluice {
@@ -39,8 +40,10 @@ double ParticleFluid<D>::boundary_flux(std::size_t index) const {
   return ranks_.sum(open_.outflow(state_.particles, open_zone_, index, owned_kind_));
 }
 
-// Height above the domain floor of the highest point of the gauge line where the fluid's
-// kernel-summed volume fraction is at least one half (isolated drops do not count).
+// Height above the domain floor of the top of the lowest water on the gauge's vertical line,
+// water being where the fluid's kernel-summed volume fraction is at least one half (so isolated
+// drops do not count), sampled every dx/4; a dip shorter than a spacing is bridged (`granular`'s
+// support, about one spacing, leaves its sum below one half between its layers of spheres).
 template <int D>
 double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
   refresh_host();
@@ -63,11 +66,9 @@ double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
     fractions.push_back(fraction);
   }
   ranks_.sum(fractions);
-  double height = 0;
-  for (std::size_t k = 0; k < heights.size(); ++k) {
-    if (fractions[k] >= 0.5) height = heights[k];
-  }
-  return height;
+  const std::ptrdiff_t top = top_of_lowest_water(
+      fractions.size(), [&](std::size_t k) { return fractions[k] >= 0.5; }, 3);
+  return top < 0 ? 0.0 : heights[static_cast<std::size_t>(top)];
 }
 
 // Largest coordinate of the fluid along the axis, to the edge of the particle (+ dx/2).

@@ -13,6 +13,7 @@
 #include "sluice/fluid/mac/surface_mesh.hpp"
 #include "sluice/fluid/mac/velocity_extension.hpp"
 #include "sluice/fluid/mac/volume_correction.hpp"
+#include "sluice/fluid/water_column.hpp"
 
 namespace sluice {
 
@@ -442,8 +443,8 @@ double MacModel<D>::pressure_at(const Vec3& x) const {
 
 template <int D>
 double MacModel<D>::water_height_at(const Vec3& gauge) const {
-  // The highest crossing of the surface on the vertical through the gauge, phi interpolated
-  // across the columns and linearly between the cell centres.
+  // The top of the lowest water on the vertical through the gauge (water_column.hpp), phi
+  // interpolated across the columns and its crossing linearly between the cell centres.
   const Lattice<D> cells = grid_.cell_lattice();
   const int up = D - 1;
   Vec<D> x = from_3d<D>(gauge);
@@ -452,14 +453,14 @@ double MacModel<D>::water_height_at(const Vec3& gauge) const {
     return cells.sample(surface_.phi(), x);
   };
   const int n = grid_.cells[up];
-  for (int k = n - 1; k >= 0; --k) {
-    const Real below = phi_at(k);
-    if (below >= 0) continue;
-    if (k == n - 1) return n * grid_.h;
-    const Real above = phi_at(k + 1);
-    return (k + 0.5) * grid_.h + grid_.h * below / (below - above);
-  }
-  return 0;
+  const std::ptrdiff_t top = top_of_lowest_water(
+      static_cast<std::size_t>(n), [&](std::size_t k) { return phi_at(static_cast<int>(k)) < 0; });
+  if (top < 0) return 0;
+  const int k = static_cast<int>(top);
+  if (k == n - 1) return n * grid_.h;
+  const Real below = phi_at(k);
+  const Real above = phi_at(k + 1);
+  return (k + 0.5) * grid_.h + grid_.h * below / (below - above);
 }
 
 template <int D>
