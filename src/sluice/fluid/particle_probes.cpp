@@ -51,7 +51,8 @@ double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
   const WendlandC2<D> kernel(radius_ / 2);
   const auto& ps = s.particles;
   const Real floor = s.domain.min[2];
-  const Real step = 0.25 * s.spacing;
+  constexpr int kSamplesPerSpacing = 4;
+  const Real step = s.spacing / kSamplesPerSpacing;
   const std::int32_t* counted = counted_kinds();
   std::vector<double> heights, fractions;
   for (Real z = floor; z <= s.domain.max[2]; z += step) {
@@ -67,7 +68,7 @@ double ParticleFluid<D>::water_height_at(const Vec3& gauge) const {
   }
   ranks_.sum(fractions);
   const std::ptrdiff_t top = top_of_lowest_water(
-      fractions.size(), [&](std::size_t k) { return fractions[k] >= 0.5; }, 3);
+      fractions.size(), [&](std::size_t k) { return fractions[k] >= 0.5; }, kSamplesPerSpacing - 1);
   return top < 0 ? 0.0 : heights[static_cast<std::size_t>(top)];
 }
 
