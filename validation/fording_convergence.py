@@ -22,8 +22,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 from probes_csv import read_probe
-from runs import (ROOT, base_model, each_run, keep_results, model_runs_parser, result_path,
-                  result_statistics, run_model, save_figure, wall_per_simulated, write_table)
+from runs import (ROOT, base_model, build_cell, each_run, keep_results, model_runs_parser,
+                  result_path, result_statistics, run_model, save_figure, wall_per_simulated,
+                  write_table)
 
 MODELS = ("wcsph", "mps", "penalty-sph", "constraint", "mac", "granular", "mac-prescribed")
 # `mac-prescribed` runs the grid with every part carried at the carriage's motion (the wheels do
@@ -86,6 +87,8 @@ def figures(out, name):
     result["steps"] = statistics.get("steps", math.nan)
     result["wall"] = wall_per_simulated(statistics, result["reached"], threads=True)
     result["wall_alone"] = wall_per_simulated(statistics, result["reached"])  # no thread count
+    result["source"] = statistics.get("source_revision")
+    result["build"] = build_cell(statistics)
     return result
 
 
@@ -95,20 +98,20 @@ def cell(value, digits, scale=1.0):
 
 def spacing_table(results, spacing):
     lines = ["| model | reached [s] | mean drag [N] | peak drag [N] | mean lift [N] | peak lift "
-             "[N] | wave at 2 / 3 / 4 m [mm] | steps | wall s per simulated s (threads) |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "[N] | wave at 2 / 3 / 4 m [mm] | steps | wall s per simulated s (threads) | build |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for (model, s), f in sorted(results.items(),
                                 key=lambda item: MODELS.index(base_model(item[0][0]))):
         if s != spacing:
             continue
         if f is None:
-            lines.append(f"| {model} | not run yet | | | | | | | |")
+            lines.append(f"| {model} | not run yet | | | | | | | | |")
             continue
         waves = " / ".join(cell(f[g], 0, 1e3) for g in GAUGES)
         lines.append(f"| {model} | {f['reached']:.2f} | {cell(f['mean_drag'], 0)} | "
                      f"{cell(f['peak_drag'], 0)} | {cell(f['mean_lift'], 0)} | "
                      f"{cell(f['peak_lift'], 0)} | {waves} | {cell(f['steps'], 0)} | "
-                     f"{f['wall']} |")
+                     f"{f['wall']} | {f['build']} |")
     return "\n".join(lines)
 
 
@@ -122,8 +125,9 @@ def change_table(results, coarse, fine):
              if results.get((m, fine)) and not math.isnan(results[(m, fine)]["mean_drag"])]
     median = float(np.median(drags)) if len(drags) == len(MEDIAN_OF) else math.nan
     lines = [f"| model | mean drag | peak drag | mean lift | peak lift | wave at 2 / 3 / 4 m | "
-             f"mean drag at {fine:g} m against the median ({cell(median, 0)} N) |",
-             "|---|---|---|---|---|---|---|"]
+             f"mean drag at {fine:g} m against the median ({cell(median, 0)} N) | "
+             "the two runs' builds |",
+             "|---|---|---|---|---|---|---|---|"]
 
     def percent(value, bar):
         if value is None or math.isnan(value):
@@ -140,8 +144,17 @@ def change_table(results, coarse, fine):
         off = (b["mean_drag"] - median) / median if median else math.nan
         lines.append(f"| {model} | {percent(moved['mean_drag'], 0.10)} | "
                      f"{percent(moved['peak_drag'], 0.10)} | {percent(moved['mean_lift'], 0.10)} | "
-                     f"{percent(moved['peak_lift'], 0.10)} | {waves} | {percent(off, 0.25)} |")
+                     f"{percent(moved['peak_lift'], 0.10)} | {waves} | {percent(off, 0.25)} | "
+                     f"{builds(a, b)} |")
     return "\n".join(lines)
+
+
+def builds(coarse, fine):
+    """Whether a change compares one build with itself: "the same", or both builds, since a
+    change between builds is not the spacing's alone."""
+    if coarse["source"] and coarse["source"] == fine["source"]:
+        return "the same"
+    return f"{coarse['build']} / {fine['build']}"
 
 
 def plot(results):

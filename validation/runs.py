@@ -246,6 +246,16 @@ def wall_per_simulated(statistics, reached, threads=False):
     return f"{rate:.0f}" + (f" ({'; '.join(notes)})" if notes else "")
 
 
+def build_cell(statistics):
+    """A table's cell for the source a run was built from: its revision as `git describe` gives
+    it (with "-dirty" where the tree held uncommitted changes), or "not recorded" for runs older
+    than the statistics that name it."""
+    revision = statistics and statistics.get("source_revision")
+    if not revision:
+        return "not recorded"
+    return f"`{revision[:7]}{'-dirty' if revision.endswith('-dirty') else ''}`"
+
+
 def open_text(path):
     """A text file for reading, gzipped or not (by its name)."""
     return gzip.open(path, "rt") if path.endswith(".gz") else open(path)
