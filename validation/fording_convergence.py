@@ -86,7 +86,6 @@ def figures(out, name):
     statistics = result_statistics(out, name) or {}
     result["steps"] = statistics.get("steps", math.nan)
     result["wall"] = wall_per_simulated(statistics, result["reached"], threads=True)
-    result["wall_alone"] = wall_per_simulated(statistics, result["reached"])  # no thread count
     result["source"] = statistics.get("source_revision")
     result["build"] = build_cell(statistics)
     return result
