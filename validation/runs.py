@@ -247,9 +247,9 @@ def wall_per_simulated(statistics, reached, threads=False):
 
 
 def build_cell(statistics):
-    """A table's cell for the source a run was built from: its revision as `git describe` gives
-    it (with "-dirty" where the tree held uncommitted changes), or "not recorded" for runs older
-    than the statistics that name it."""
+    """A table's cell for the source a run was built from: its commit's short hash (with
+    "-dirty" where the tree held uncommitted changes), or "not recorded" for runs older than the
+    statistics that name it."""
     revision = statistics and statistics.get("source_revision")
     if not revision:
         return "not recorded"
