@@ -104,3 +104,10 @@ def test_a_table_keeps_every_default_run_when_some_are_run():
     default = "mac@0.04,mac@0.02,wcsph@0.02"
     assert runs.runs_to_tabulate("mac@0.04", default) == default.split(",")
     assert runs.runs_to_tabulate("mps@0.02,mac@0.02", default) == default.split(",") + ["mps@0.02"]
+
+
+def test_a_tables_build_cell_names_the_runs_source_or_says_it_was_not_recorded():
+    assert runs.build_cell({"source_revision": "15b43079ea47"}) == "`15b4307`"
+    assert runs.build_cell({"source_revision": "b69d7bcac34f-dirty"}) == "`b69d7bc-dirty`"
+    assert runs.build_cell({"steps": 10}) == "not recorded"
+    assert runs.build_cell(None) == "not recorded"
